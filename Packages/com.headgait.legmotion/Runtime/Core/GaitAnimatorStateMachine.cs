@@ -1,0 +1,296 @@
+using System;
+using System.Collections.Generic;
+
+namespace HeadGait
+{
+    /// <summary>Animator states, one per clip family of the avatar's lower body.</summary>
+    public enum LocomotionState
+    {
+        Standing = 0,
+        StartWalkLeft = 1,
+        StartWalkRight = 2,
+        Walking = 3,
+        FinishWalkLeft = 4,
+        FinishWalkRight = 5,
+    }
+
+    public sealed class AnimatorSettings
+    {
+        /// <summary>How many of the latest predictions are smoothed (5 in the paper).</summary>
+        public int HistoryLength = 5;
+
+        /// <summary>Consecutive predictions that disagree with the animator before it changes course (3 in the paper).</summary>
+        public int ConsecutiveErrorsToSwitch = 3;
+
+        /// <summary>A walking prediction within this stride fraction of the animator's own position agrees with it.</summary>
+        public double PhaseTolerance = 0.08;
+
+        /// <summary>Share of the smoothed phase error removed per update while predictions agree (keeps the loop locked).</summary>
+        public double Correction = 0.15;
+
+        /// <summary>Seconds over which the animator blends to a new phase after it gave up on its own.</summary>
+        public double BlendTime = 0.1;
+
+        /// <summary>Step period used until predictions provide one (seconds).</summary>
+        public double DefaultStepPeriod = 0.55;
+
+        /// <summary>Longest Start/Finish clip, in step periods, before the state is forced on.</summary>
+        public double MaxTransitionSteps = 1.5;
+    }
+
+    /// <summary>What the avatar's legs should show after one update.</summary>
+    public readonly struct AnimatorFrame
+    {
+        public readonly double Time;
+        public readonly LocomotionState State;
+        /// <summary>Stride position driving the walking clips (0 = left initial contact).</summary>
+        public readonly double StridePosition;
+        public readonly GaitPhase Left;
+        public readonly GaitPhase Right;
+        /// <summary>Weight of the walking clips against the standing pose, 0..1.</summary>
+        public readonly double WalkWeight;
+        public readonly double StepPeriod;
+        /// <summary>True on the update where the animator gave up its own phase for the predicted one.</summary>
+        public readonly bool Resynchronised;
+
+        public AnimatorFrame(double time, LocomotionState state, double stridePosition, GaitPhase left, GaitPhase right, double walkWeight, double stepPeriod, bool resynchronised)
+        {
+            Time = time;
+            State = state;
+            StridePosition = stridePosition;
+            Left = left;
+            Right = right;
+            WalkWeight = walkWeight;
+            StepPeriod = stepPeriod;
+            Resynchronised = resynchronised;
+        }
+
+        public GaitPhase PhaseOf(Foot foot) => foot == Foot.Left ? Left : Right;
+
+        public override string ToString() => $"t={Time:F3} {State} s={StridePosition:F3} L={GaitPhases.ShortName(Left)} R={GaitPhases.ShortName(Right)} w={WalkWeight:F2}";
+    }
+
+    /// <summary>
+    /// The avatar's lower-body state machine. It runs its own stride clock and follows the classifier
+    /// through the smoothed last 5 predictions, but only changes course (start, finish, or jump to a new
+    /// phase) after 3 consecutive predictions disagree with it, so single misclassifications never reach
+    /// the avatar.
+    /// <list type="bullet">
+    /// <item>Standing -> Start Walk Left/Right: the foot that lands first (the one in swing) names the clip.</item>
+    /// <item>Start Walk X -> Walking: once foot X's initial contact is reached.</item>
+    /// <item>Walking -> Finish Walk Left/Right: the foot that lands next closes the gait.</item>
+    /// <item>Finish Walk X -> Standing: once foot X has landed; -> Walking again if walking resumes.</item>
+    /// </list>
+    /// </summary>
+    public sealed class GaitAnimatorStateMachine
+    {
+        readonly AnimatorSettings settings;
+        readonly PhaseMap map;
+        readonly List<GaitPrediction> history = new List<GaitPrediction>();
+
+        LocomotionState state = LocomotionState.Standing;
+        double s;
+        double stepPeriod;
+        double lastTime = double.NaN;
+        int wrongRun;
+        double blendRemaining;   // stride fraction still to blend in
+        double blendTimeLeft;
+        double transitionTarget; // stride position that ends a Start/Finish clip
+        double transitionElapsed;
+        double transitionStartS;
+
+        public GaitAnimatorStateMachine(PhaseMap phaseMap = null, AnimatorSettings settings = null)
+        {
+            this.settings = settings ?? new AnimatorSettings();
+            if (this.settings.HistoryLength < 1 || this.settings.ConsecutiveErrorsToSwitch < 1)
+                throw new ArgumentException("HistoryLength and ConsecutiveErrorsToSwitch must be at least 1.");
+            map = phaseMap ?? PhaseMap.Perry;
+            stepPeriod = this.settings.DefaultStepPeriod;
+        }
+
+        public LocomotionState State => state;
+        public double StridePosition => s;
+        public AnimatorSettings Settings => settings;
+        public int ConsecutiveWrong => wrongRun;
+
+        public void Reset()
+        {
+            history.Clear();
+            state = LocomotionState.Standing;
+            s = 0;
+            stepPeriod = settings.DefaultStepPeriod;
+            lastTime = double.NaN;
+            wrongRun = 0;
+            blendRemaining = 0;
+            blendTimeLeft = 0;
+        }
+
+        static bool BelievesWalking(LocomotionState st)
+            => st == LocomotionState.Walking || st == LocomotionState.StartWalkLeft || st == LocomotionState.StartWalkRight;
+
+        public AnimatorFrame Update(GaitPrediction p)
+        {
+            double dt = double.IsNaN(lastTime) ? 0 : p.Time - lastTime;
+            if (!(dt >= 0)) dt = 0;
+            if (dt > 0.25) dt = 0.25; // a stalled stream must not fling the clock around
+            lastTime = p.Time;
+
+            history.Add(p);
+            if (history.Count > settings.HistoryLength) history.RemoveAt(0);
+            if (p.IsWalking && p.StepPeriod > 0) stepPeriod = 0.9 * stepPeriod + 0.1 * p.StepPeriod;
+
+            // Advance the animator's own clock.
+            double before = s;
+            if (state != LocomotionState.Standing)
+            {
+                s = PhaseMap.Wrap(s + dt / (2 * stepPeriod));
+                if (blendTimeLeft > 0)
+                {
+                    double part = blendTimeLeft <= dt ? blendRemaining : blendRemaining * dt / blendTimeLeft;
+                    s = PhaseMap.Wrap(s + part);
+                    blendRemaining -= part;
+                    blendTimeLeft = Math.Max(0, blendTimeLeft - dt);
+                }
+            }
+
+            bool walkingBelief = BelievesWalking(state);
+            bool wrong = walkingBelief
+                ? !p.IsWalking || Math.Abs(PhaseMap.CyclicDelta(p.StridePosition, s)) > settings.PhaseTolerance
+                : p.IsWalking;
+            wrongRun = wrong ? wrongRun + 1 : 0;
+
+            bool smoothedWalking = SmoothedWalking(p.Time, out double smoothedS);
+            bool resync = false;
+
+            if (wrongRun >= settings.ConsecutiveErrorsToSwitch)
+            {
+                int walkingVotes = 0;
+                for (int i = history.Count - settings.ConsecutiveErrorsToSwitch; i < history.Count; i++)
+                    if (i >= 0 && history[i].IsWalking) walkingVotes++;
+                bool recentWalking = 2 * walkingVotes > settings.ConsecutiveErrorsToSwitch;
+                if (!walkingBelief && recentWalking)
+                {
+                    if (state == LocomotionState.Standing)
+                    {
+                        s = smoothedWalking ? smoothedS : p.StridePosition;
+                        Foot lead = NextFootToLand(s, out double target);
+                        Enter(lead == Foot.Left ? LocomotionState.StartWalkLeft : LocomotionState.StartWalkRight, target);
+                    }
+                    else
+                    {
+                        BlendTo(smoothedWalking ? smoothedS : p.StridePosition);
+                        state = LocomotionState.Walking;
+                    }
+                    resync = true;
+                }
+                else if (walkingBelief && !recentWalking)
+                {
+                    Foot closing = NextFootToLand(s, out double target);
+                    Enter(closing == Foot.Left ? LocomotionState.FinishWalkLeft : LocomotionState.FinishWalkRight, target);
+                }
+                else if (walkingBelief && smoothedWalking)
+                {
+                    BlendTo(smoothedS);
+                    resync = true;
+                }
+                wrongRun = 0;
+            }
+            else if (walkingBelief && !wrong && smoothedWalking && blendTimeLeft <= 0)
+            {
+                s = PhaseMap.Wrap(s + settings.Correction * PhaseMap.CyclicDelta(smoothedS, s));
+            }
+
+            // Start and Finish clips end when their foot lands (or after a bounded time).
+            if (state != LocomotionState.Standing && state != LocomotionState.Walking && !resync)
+            {
+                transitionElapsed += dt;
+                bool landed = Passed(before, s, transitionTarget);
+                bool overdue = transitionElapsed > settings.MaxTransitionSteps * stepPeriod;
+                if (landed || overdue)
+                {
+                    if (state == LocomotionState.StartWalkLeft || state == LocomotionState.StartWalkRight) state = LocomotionState.Walking;
+                    else state = LocomotionState.Standing;
+                }
+            }
+
+            return Frame(p.Time, resync);
+        }
+
+        AnimatorFrame Frame(double time, bool resync)
+        {
+            if (state == LocomotionState.Standing)
+                return new AnimatorFrame(time, state, s, GaitPhase.Standing, GaitPhase.Standing, 0, stepPeriod, resync);
+            double weight = 1;
+            if (state != LocomotionState.Walking)
+            {
+                double total = PhaseMap.Wrap(transitionTarget - transitionStartS);
+                double done = total > 1e-6 ? Math.Min(1, PhaseMap.Wrap(s - transitionStartS) / total) : 1;
+                if (PhaseMap.Wrap(s - transitionStartS) > 0.75) done = 0; // blended slightly backwards
+                bool starting = state == LocomotionState.StartWalkLeft || state == LocomotionState.StartWalkRight;
+                weight = starting ? done : 1 - done;
+            }
+            return new AnimatorFrame(time, state, s, map.PhaseAt(Foot.Left, s), map.PhaseAt(Foot.Right, s), weight, stepPeriod, resync);
+        }
+
+        void Enter(LocomotionState next, double target)
+        {
+            state = next;
+            transitionTarget = target;
+            transitionStartS = s;
+            transitionElapsed = 0;
+        }
+
+        void BlendTo(double target)
+        {
+            blendRemaining = PhaseMap.CyclicDelta(target, s);
+            blendTimeLeft = settings.BlendTime;
+            if (blendTimeLeft <= 0)
+            {
+                s = PhaseMap.Wrap(target);
+                blendRemaining = 0;
+            }
+        }
+
+        /// <summary>The foot whose initial contact comes next from stride position x, and where it lands.</summary>
+        Foot NextFootToLand(double x, out double target)
+        {
+            double left = map.StridePositionOfOnset(Foot.Left, GaitPhase.InitialContact);
+            double right = map.StridePositionOfOnset(Foot.Right, GaitPhase.InitialContact);
+            double dl = PhaseMap.Wrap(left - x), dr = PhaseMap.Wrap(right - x);
+            if (dl <= dr)
+            {
+                target = left;
+                return Foot.Left;
+            }
+            target = right;
+            return Foot.Right;
+        }
+
+        /// <summary>Did the clock pass the target going forward from a to b (a short forward move)?</summary>
+        static bool Passed(double a, double b, double target)
+        {
+            double moved = PhaseMap.Wrap(b - a);
+            if (moved > 0.5) return false; // went backwards (blend)
+            double toTarget = PhaseMap.Wrap(target - a);
+            return toTarget > 0 && toTarget <= moved || (moved > 0 && Math.Abs(PhaseMap.CyclicDelta(b, target)) < 1e-9);
+        }
+
+        /// <summary>Majority vote of the history for walking, and the circular mean of the walking predictions' positions, each advanced to now.</summary>
+        bool SmoothedWalking(double now, out double position)
+        {
+            int votes = 0;
+            double cx = 0, cy = 0;
+            foreach (var h in history)
+            {
+                if (!h.IsWalking) continue;
+                votes++;
+                double period = h.StepPeriod > 0 ? h.StepPeriod : stepPeriod;
+                double x = h.StridePosition + (now - h.Time) / (2 * period);
+                cx += Math.Cos(2 * Math.PI * x);
+                cy += Math.Sin(2 * Math.PI * x);
+            }
+            position = votes > 0 ? PhaseMap.Wrap(Math.Atan2(cy, cx) / (2 * Math.PI)) : s;
+            return 2 * votes > history.Count;
+        }
+    }
+}

@@ -1,0 +1,72 @@
+using System;
+using System.Diagnostics;
+
+namespace HeadGait
+{
+    /// <summary>
+    /// The whole chain for live use: samples in, animator frames out.
+    /// Push every accelerometer sample; <see cref="Latest"/> is the avatar's current leg state.
+    /// </summary>
+    public sealed class GaitPipeline
+    {
+        readonly StreamPreprocessor preprocessor;
+        readonly IGaitClassifier classifier;
+        readonly GaitAnimatorStateMachine animator;
+        readonly Action<SignalWindow> onWindow;
+        readonly Stopwatch stopwatch = new Stopwatch();
+
+        public GaitPipeline(IGaitClassifier classifier, PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null)
+        {
+            this.classifier = classifier ?? throw new ArgumentNullException(nameof(classifier));
+            preprocessor = new StreamPreprocessor(preprocessorSettings ?? new PreprocessorSettings());
+            animator = new GaitAnimatorStateMachine(classifier.PhaseMap, animatorSettings);
+            onWindow = OnWindow;
+            Latest = new AnimatorFrame(0, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+        }
+
+        public StreamPreprocessor Preprocessor => preprocessor;
+        public IGaitClassifier Classifier => classifier;
+        public GaitAnimatorStateMachine Animator => animator;
+
+        public GaitPrediction LatestPrediction { get; private set; }
+        public AnimatorFrame Latest { get; private set; }
+        public long Windows { get; private set; }
+
+        /// <summary>Total time spent inside the classifier, for per-window cost.</summary>
+        public TimeSpan ClassifierTime => stopwatch.Elapsed;
+
+        /// <summary>Called after each window with the prediction and the resulting animator frame.</summary>
+        public event Action<GaitPrediction, AnimatorFrame> FrameProduced;
+
+        public SampleOutcome Push(in ImuSample sample)
+        {
+            var outcome = preprocessor.Push(sample, onWindow);
+            if (outcome == SampleOutcome.AcceptedAfterGap)
+            {
+                // The signal broke off: forget the stale history rather than animate through the hole.
+                classifier.Reset();
+            }
+            return outcome;
+        }
+
+        public SampleOutcome Push(double time, double x, double y, double z) => Push(new ImuSample(time, x, y, z));
+
+        void OnWindow(SignalWindow window)
+        {
+            stopwatch.Start();
+            var prediction = classifier.Classify(window);
+            stopwatch.Stop();
+            LatestPrediction = prediction;
+            Latest = animator.Update(prediction);
+            Windows++;
+            FrameProduced?.Invoke(prediction, Latest);
+        }
+
+        public void Reset()
+        {
+            preprocessor.Reset();
+            classifier.Reset();
+            animator.Reset();
+        }
+    }
+}

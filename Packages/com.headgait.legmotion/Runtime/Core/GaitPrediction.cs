@@ -1,0 +1,55 @@
+namespace HeadGait
+{
+    /// <summary>
+    /// A classifier's answer for one window: standing, or walking at a stride position
+    /// (0..1, 0 = left initial contact) from which each foot's phase follows.
+    /// </summary>
+    public readonly struct GaitPrediction
+    {
+        public readonly double Time;
+        public readonly bool IsWalking;
+        public readonly double StridePosition;
+        /// <summary>Estimated duration of one step (half a stride), seconds.</summary>
+        public readonly double StepPeriod;
+        /// <summary>Classifier-specific score in 0..1 (COR: Pearson r; THR: 1 after a detected step, decaying).</summary>
+        public readonly double Confidence;
+        public readonly GaitPhase Left;
+        public readonly GaitPhase Right;
+
+        GaitPrediction(double time, bool walking, double stridePosition, double stepPeriod, double confidence, GaitPhase left, GaitPhase right)
+        {
+            Time = time;
+            IsWalking = walking;
+            StridePosition = stridePosition;
+            StepPeriod = stepPeriod;
+            Confidence = confidence;
+            Left = left;
+            Right = right;
+        }
+
+        public static GaitPrediction Standing(double time, double confidence = 0)
+            => new GaitPrediction(time, false, 0, 0, confidence, GaitPhase.Standing, GaitPhase.Standing);
+
+        public static GaitPrediction Walking(double time, double stridePosition, double stepPeriod, double confidence, PhaseMap map)
+        {
+            double s = PhaseMap.Wrap(stridePosition);
+            return new GaitPrediction(time, true, s, stepPeriod, confidence, map.PhaseAt(Foot.Left, s), map.PhaseAt(Foot.Right, s));
+        }
+
+        public GaitPhase PhaseOf(Foot foot) => foot == Foot.Left ? Left : Right;
+
+        public override string ToString()
+            => IsWalking
+                ? $"t={Time:F3} walk s={StridePosition:F3} L={GaitPhases.ShortName(Left)} R={GaitPhases.ShortName(Right)} conf={Confidence:F2}"
+                : $"t={Time:F3} standing";
+    }
+
+    /// <summary>A per-window gait phase classifier. Implementations may keep state between windows.</summary>
+    public interface IGaitClassifier
+    {
+        string Name { get; }
+        PhaseMap PhaseMap { get; }
+        GaitPrediction Classify(SignalWindow window);
+        void Reset();
+    }
+}

@@ -1,0 +1,198 @@
+using System;
+
+namespace HeadGait
+{
+    public sealed class PreprocessorSettings
+    {
+        /// <summary>Rate of the resampled grid the classifiers work on (Hz).</summary>
+        public double SampleRate = 100.0;
+
+        /// <summary>Samples per window (50 at 100 Hz = 0.5 s).</summary>
+        public int WindowLength = 50;
+
+        /// <summary>Standard gravity subtracted from the signal magnitude vector (m/s^2).</summary>
+        public double Gravity = 9.80665;
+
+        /// <summary>
+        /// Longest hole between two input samples that is bridged by interpolation (seconds). A longer
+        /// hole empties the window: the next window is emitted only after WindowLength fresh samples.
+        /// </summary>
+        public double MaxGap = 0.1;
+
+        /// <summary>Input samples whose magnitude exceeds this (m/s^2) are treated as corrupt and skipped.</summary>
+        public double MaxMagnitude = 200.0;
+
+        public void Validate()
+        {
+            if (!(SampleRate > 0) || double.IsInfinity(SampleRate)) throw new ArgumentException("SampleRate must be positive.");
+            if (WindowLength < 2) throw new ArgumentException("WindowLength must be at least 2.");
+            if (!(MaxGap > 0)) throw new ArgumentException("MaxGap must be positive.");
+            if (!(Gravity >= 0)) throw new ArgumentException("Gravity must not be negative.");
+        }
+    }
+
+    /// <summary>What the preprocessor did with one input sample.</summary>
+    public enum SampleOutcome
+    {
+        Accepted,
+        /// <summary>Accepted, but it followed a hole longer than MaxGap: the window restarted.</summary>
+        AcceptedAfterGap,
+        SkippedNotFinite,
+        SkippedOutOfOrder,
+        SkippedDuplicateTime,
+        SkippedImplausible,
+    }
+
+    /// <summary>
+    /// Streaming front end: takes head accelerometer samples at any (irregular) rate, linearly resamples
+    /// them to a fixed grid (100 Hz), computes SMV minus gravity and the lateral channel, and emits a
+    /// sliding window (50 samples, step 1) for every grid sample once the window is full.
+    /// Bad samples (NaN/infinite, out-of-order or repeated timestamps, absurd magnitudes) are skipped and
+    /// counted, never thrown on.
+    /// </summary>
+    public sealed class StreamPreprocessor
+    {
+        readonly PreprocessorSettings settings;
+        readonly double[] smvRing;
+        readonly double[] latRing;
+        readonly SignalWindow window;
+        readonly double dt;
+
+        bool hasPrevious;
+        ImuSample previous;
+        double previousSmv;
+        long gridIndex;       // index of the next grid sample to produce, relative to gridOrigin
+        double gridOrigin;    // time of grid index 0
+        long filled;          // samples in the ring since the last (re)start
+        long produced;
+
+        public StreamPreprocessor() : this(new PreprocessorSettings()) { }
+
+        public StreamPreprocessor(PreprocessorSettings settings)
+        {
+            this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
+            settings.Validate();
+            smvRing = new double[settings.WindowLength];
+            latRing = new double[settings.WindowLength];
+            window = new SignalWindow(settings.WindowLength, settings.SampleRate);
+            dt = 1.0 / settings.SampleRate;
+        }
+
+        public PreprocessorSettings Settings => settings;
+
+        public int SkippedNotFinite { get; private set; }
+        public int SkippedOutOfOrder { get; private set; }
+        public int SkippedDuplicateTime { get; private set; }
+        public int SkippedImplausible { get; private set; }
+        public int Gaps { get; private set; }
+        public int Accepted { get; private set; }
+
+        /// <summary>Resampled grid samples produced so far.</summary>
+        public long Produced => produced;
+
+        public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible;
+
+        public void Reset()
+        {
+            hasPrevious = false;
+            filled = 0;
+            gridIndex = 0;
+        }
+
+        public double Smv(in ImuSample s) => Math.Sqrt(s.X * s.X + s.Y * s.Y + s.Z * s.Z) - settings.Gravity;
+
+        /// <summary>Feeds one input sample; <paramref name="onWindow"/> is called for every full window it completes.</summary>
+        public SampleOutcome Push(in ImuSample sample, Action<SignalWindow> onWindow)
+        {
+            if (!sample.IsFinite)
+            {
+                SkippedNotFinite++;
+                return SampleOutcome.SkippedNotFinite;
+            }
+            double mag = Math.Sqrt(sample.X * sample.X + sample.Y * sample.Y + sample.Z * sample.Z);
+            if (mag > settings.MaxMagnitude)
+            {
+                SkippedImplausible++;
+                return SampleOutcome.SkippedImplausible;
+            }
+            double smv = mag - settings.Gravity;
+
+            if (!hasPrevious)
+            {
+                Start(sample, smv, onWindow);
+                Accepted++;
+                return SampleOutcome.Accepted;
+            }
+            if (sample.Time < previous.Time)
+            {
+                SkippedOutOfOrder++;
+                return SampleOutcome.SkippedOutOfOrder;
+            }
+            if (sample.Time == previous.Time)
+            {
+                SkippedDuplicateTime++;
+                return SampleOutcome.SkippedDuplicateTime;
+            }
+            if (sample.Time - previous.Time > settings.MaxGap)
+            {
+                Gaps++;
+                Start(sample, smv, onWindow);
+                Accepted++;
+                return SampleOutcome.AcceptedAfterGap;
+            }
+
+            // Produce every grid sample in (previous.Time, sample.Time] by linear interpolation.
+            double span = sample.Time - previous.Time;
+            while (true)
+            {
+                double t = gridOrigin + gridIndex * dt;
+                if (t > sample.Time + 1e-9) break;
+                double a = (t - previous.Time) / span;
+                if (a < 0) a = 0;
+                if (a > 1) a = 1;
+                double s = previousSmv + a * (smv - previousSmv);
+                double lat = previous.Y + a * (sample.Y - previous.Y);
+                Emit(t, s, lat, onWindow);
+            }
+            previous = sample;
+            previousSmv = smv;
+            Accepted++;
+            return SampleOutcome.Accepted;
+        }
+
+        void Start(in ImuSample sample, double smv, Action<SignalWindow> onWindow)
+        {
+            hasPrevious = true;
+            previous = sample;
+            previousSmv = smv;
+            filled = 0;
+            gridOrigin = sample.Time;
+            gridIndex = 0;
+            Emit(sample.Time, smv, sample.Y, onWindow);
+        }
+
+        void Emit(double t, double smv, double lateral, Action<SignalWindow> onWindow)
+        {
+            int n = smvRing.Length;
+            int slot = (int)(filled % n);
+            smvRing[slot] = smv;
+            latRing[slot] = lateral;
+            filled++;
+            gridIndex++;
+            produced++;
+            if (filled < n) return;
+            // Unroll the ring oldest-first into the window.
+            int start = (int)(filled % n);
+            for (int i = 0; i < n; i++)
+            {
+                int k = start + i;
+                if (k >= n) k -= n;
+                window.Smv[i] = smvRing[k];
+                window.Lateral[i] = latRing[k];
+            }
+            window.EndTime = t;
+            window.EndIndex = filled - 1;
+            onWindow?.Invoke(window);
+        }
+    }
+}
