@@ -154,46 +154,65 @@ namespace HeadGait
             }
 
             bool walkingBelief = BelievesWalking(state);
+            // While blending, the animator is already committed to where the blend ends.
+            double committed = PhaseMap.Wrap(s + (blendTimeLeft > 0 ? blendRemaining : 0));
             bool wrong = walkingBelief
-                ? !p.IsWalking || Math.Abs(PhaseMap.CyclicDelta(p.StridePosition, s)) > settings.PhaseTolerance
+                ? !p.IsWalking || Math.Abs(PhaseMap.CyclicDelta(p.StridePosition, committed)) > settings.PhaseTolerance
                 : p.IsWalking;
             wrongRun = wrong ? wrongRun + 1 : 0;
 
-            bool smoothedWalking = SmoothedWalking(p.Time, out double smoothedS);
+            bool smoothedWalking = SmoothedWalking(p.Time, history.Count, out double smoothedS);
             bool resync = false;
 
             if (wrongRun >= settings.ConsecutiveErrorsToSwitch)
             {
+                // Change course towards what the disagreeing predictions say, not the older agreeing ones,
+                // and only if they agree among themselves (scattered phases are noise, not a new gait).
+                SmoothedWalking(p.Time, settings.ConsecutiveErrorsToSwitch, out double wrongS);
+                bool coherent = Coherent(p.Time, settings.ConsecutiveErrorsToSwitch, wrongS);
                 int walkingVotes = 0;
                 for (int i = history.Count - settings.ConsecutiveErrorsToSwitch; i < history.Count; i++)
                     if (i >= 0 && history[i].IsWalking) walkingVotes++;
                 bool recentWalking = 2 * walkingVotes > settings.ConsecutiveErrorsToSwitch;
-                if (!walkingBelief && recentWalking)
+                if (!walkingBelief && recentWalking && !coherent)
+                {
+                    // Not yet: keep counting, the next coherent triple decides.
+                    wrongRun = settings.ConsecutiveErrorsToSwitch - 1;
+                }
+                else if (!walkingBelief && recentWalking)
                 {
                     if (state == LocomotionState.Standing)
                     {
-                        s = smoothedWalking ? smoothedS : p.StridePosition;
+                        s = wrongS;
                         Foot lead = NextFootToLand(s, out double target);
                         Enter(lead == Foot.Left ? LocomotionState.StartWalkLeft : LocomotionState.StartWalkRight, target);
                     }
                     else
                     {
-                        BlendTo(smoothedWalking ? smoothedS : p.StridePosition);
+                        BlendTo(wrongS);
                         state = LocomotionState.Walking;
                     }
                     resync = true;
                 }
                 else if (walkingBelief && !recentWalking)
                 {
-                    Foot closing = NextFootToLand(s, out double target);
-                    Enter(closing == Foot.Left ? LocomotionState.FinishWalkLeft : LocomotionState.FinishWalkRight, target);
+                    if (state == LocomotionState.Walking)
+                    {
+                        Foot closing = NextFootToLand(s, out double target);
+                        Enter(closing == Foot.Left ? LocomotionState.FinishWalkLeft : LocomotionState.FinishWalkRight, target);
+                    }
+                    else
+                    {
+                        // Contradicted before the lead foot landed: cancel the start, back to standing.
+                        state = LocomotionState.Standing;
+                    }
                 }
-                else if (walkingBelief && smoothedWalking)
+                else if (walkingBelief && coherent)
                 {
-                    BlendTo(smoothedS);
+                    BlendTo(wrongS);
                     resync = true;
                 }
-                wrongRun = 0;
+                if (wrongRun >= settings.ConsecutiveErrorsToSwitch) wrongRun = 0;
             }
             else if (walkingBelief && !wrong && smoothedWalking && blendTimeLeft <= 0)
             {
@@ -275,13 +294,32 @@ namespace HeadGait
             return toTarget > 0 && toTarget <= moved || (moved > 0 && Math.Abs(PhaseMap.CyclicDelta(b, target)) < 1e-9);
         }
 
-        /// <summary>Majority vote of the history for walking, and the circular mean of the walking predictions' positions, each advanced to now.</summary>
-        bool SmoothedWalking(double now, out double position)
+        /// <summary>Do the latest walking predictions, advanced to now, lie within the phase tolerance of their mean?</summary>
+        bool Coherent(double now, int count, double mean)
         {
-            int votes = 0;
-            double cx = 0, cy = 0;
-            foreach (var h in history)
+            for (int i = Math.Max(0, history.Count - count); i < history.Count; i++)
             {
+                var h = history[i];
+                if (!h.IsWalking) continue;
+                double period = h.StepPeriod > 0 ? h.StepPeriod : stepPeriod;
+                double x = h.StridePosition + (now - h.Time) / (2 * period);
+                if (Math.Abs(PhaseMap.CyclicDelta(x, mean)) > settings.PhaseTolerance) return false;
+            }
+            return true;
+        }
+
+        /// <summary>
+        /// Majority vote of the latest <paramref name="count"/> predictions for walking, and the circular mean of
+        /// the walking ones' stride positions, each advanced to now.
+        /// </summary>
+        bool SmoothedWalking(double now, int count, out double position)
+        {
+            int votes = 0, considered = 0;
+            double cx = 0, cy = 0;
+            for (int i = Math.Max(0, history.Count - count); i < history.Count; i++)
+            {
+                var h = history[i];
+                considered++;
                 if (!h.IsWalking) continue;
                 votes++;
                 double period = h.StepPeriod > 0 ? h.StepPeriod : stepPeriod;
@@ -290,7 +328,7 @@ namespace HeadGait
                 cy += Math.Sin(2 * Math.PI * x);
             }
             position = votes > 0 ? PhaseMap.Wrap(Math.Atan2(cy, cx) / (2 * Math.PI)) : s;
-            return 2 * votes > history.Count;
+            return 2 * votes > considered;
         }
     }
 }

@@ -1,0 +1,164 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    public class AnimatorTests
+    {
+        const double Dt = 0.01;
+        const double Step = 0.55;
+        static readonly PhaseMap Map = PhaseMap.Perry;
+
+        static GaitPrediction Walk(double t, double s) => GaitPrediction.Walking(t, s, Step, 1, Map);
+        static GaitPrediction Stand(double t) => GaitPrediction.Standing(t);
+
+        /// <summary>Feeds n predictions of steady walking starting at stride position s0; returns the last frame.</summary>
+        static AnimatorFrame WalkFor(GaitAnimatorStateMachine a, ref double t, double s0, int n, List<AnimatorFrame> frames = null)
+        {
+            AnimatorFrame f = default;
+            for (int i = 0; i < n; i++)
+            {
+                f = a.Update(Walk(t, s0 + i * Dt / (2 * Step)));
+                frames?.Add(f);
+                t += Dt;
+            }
+            return f;
+        }
+
+        [Test]
+        public void StartsWithTheFootThatIsInSwing()
+        {
+            // Left toe-off (s = 0.62): the left foot swings and lands first.
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            Assert.That(a.Update(Walk(t, 0.62)).State, Is.EqualTo(LocomotionState.Standing)); t += Dt;
+            Assert.That(a.Update(Walk(t, 0.63)).State, Is.EqualTo(LocomotionState.Standing)); t += Dt;
+            Assert.That(a.Update(Walk(t, 0.64)).State, Is.EqualTo(LocomotionState.StartWalkLeft)); t += Dt;
+
+            var b = new GaitAnimatorStateMachine(Map);
+            t = 0;
+            AnimatorFrame f = default;
+            for (int i = 0; i < 3; i++, t += Dt) f = b.Update(Walk(t, 0.12 + i * 0.01));
+            Assert.That(f.State, Is.EqualTo(LocomotionState.StartWalkRight));
+        }
+
+        [Test]
+        public void StartClipEndsWhenTheLeadFootLands()
+        {
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            var frames = new List<AnimatorFrame>();
+            WalkFor(a, ref t, 0.62, 80, frames);
+            int landing = frames.FindIndex(f => f.State == LocomotionState.Walking);
+            Assert.That(landing, Is.GreaterThan(0));
+            // Walking begins at the left initial contact (s wraps to ~0), ~0.38 strides after the start.
+            Assert.That(frames[landing].StridePosition, Is.LessThan(0.05).Or.GreaterThan(0.97));
+            Assert.That(frames[landing].Left, Is.EqualTo(GaitPhase.InitialContact).Or.EqualTo(GaitPhase.TerminalSwing));
+            Assert.That(frames[landing - 1].WalkWeight, Is.GreaterThan(frames[5].WalkWeight));
+        }
+
+        [Test]
+        public void IgnoresUpToTwoWrongPredictions()
+        {
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            var f = WalkFor(a, ref t, 0.0, 200);
+            Assert.That(f.State, Is.EqualTo(LocomotionState.Walking));
+            double s = f.StridePosition;
+            // Two standing predictions, one right one, then two that are half a stride off: nothing changes course.
+            double d = Dt / (2 * Step);
+            f = a.Update(Stand(t)); t += Dt;
+            f = a.Update(Stand(t)); t += Dt;
+            Assert.That(f.State, Is.EqualTo(LocomotionState.Walking));
+            f = a.Update(Walk(t, s + 3 * d)); t += Dt;
+            double expected = s + 5 * d;
+            f = a.Update(Walk(t, expected - d + 0.5)); t += Dt;
+            f = a.Update(Walk(t, expected + 0.5)); t += Dt;
+            Assert.That(f.State, Is.EqualTo(LocomotionState.Walking));
+            Assert.That(Math.Abs(PhaseMap.CyclicDelta(f.StridePosition, expected)), Is.LessThan(0.03));
+        }
+
+        [Test]
+        public void ThreeConsecutiveWrongPhasesMakeItBlendToTheNewPhase()
+        {
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            var f = WalkFor(a, ref t, 0.0, 200);
+            double s = f.StridePosition + Dt / (2 * Step);
+            // The classifier now insists the stride is 0.3 further on.
+            bool resynced = false;
+            for (int i = 0; i < 3; i++, t += Dt, s += Dt / (2 * Step))
+            {
+                f = a.Update(Walk(t, s + 0.3));
+                if (i < 2) Assert.That(f.Resynchronised, Is.False);
+                resynced |= f.Resynchronised;
+            }
+            Assert.That(resynced, Is.True);
+            // After the blend time it follows the new phase.
+            for (int i = 0; i < 15; i++, t += Dt, s += Dt / (2 * Step)) f = a.Update(Walk(t, s + 0.3));
+            Assert.That(Math.Abs(PhaseMap.CyclicDelta(f.StridePosition, s - Dt / (2 * Step) + 0.3)), Is.LessThan(0.03));
+        }
+
+        [Test]
+        public void FinishesWithTheFootThatLandsNextThenStands()
+        {
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            // Walk until the stride is at 0.3: the right foot is in swing and lands next (at 0.5).
+            double s0 = 0.3 - 200 * Dt / (2 * Step);
+            var f = WalkFor(a, ref t, s0, 200);
+            for (int i = 0; i < 3; i++, t += Dt) f = a.Update(Stand(t));
+            Assert.That(f.State, Is.EqualTo(LocomotionState.FinishWalkRight));
+            var states = new List<LocomotionState>();
+            for (int i = 0; i < 60; i++, t += Dt) states.Add(a.Update(Stand(t)).State);
+            Assert.That(states[states.Count - 1], Is.EqualTo(LocomotionState.Standing));
+            int standAt = states.IndexOf(LocomotionState.Standing);
+            // It stood once the right foot had landed: (0.5 - 0.3) of a 1.1 s stride = 0.22 s.
+            Assert.That(standAt * Dt + 3 * Dt, Is.EqualTo(0.22).Within(0.05));
+        }
+
+        [Test]
+        public void ResumesWalkingIfWalkingReturnsDuringTheFinish()
+        {
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            var f = WalkFor(a, ref t, 0.1, 200);
+            double s = f.StridePosition;
+            for (int i = 0; i < 3; i++, t += Dt) f = a.Update(Stand(t));
+            Assert.That(f.State, Is.EqualTo(LocomotionState.FinishWalkRight).Or.EqualTo(LocomotionState.FinishWalkLeft));
+            f = WalkFor(a, ref t, s + 6 * Dt / (2 * Step), 3);
+            Assert.That(f.State, Is.EqualTo(LocomotionState.Walking));
+        }
+
+        [Test]
+        public void SmoothingKeepsThePhaseSteadierThanNoisyPredictions()
+        {
+            var rnd = new Random(3);
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0, s = 0, predErr = 0, animErr = 0;
+            int n = 0;
+            for (int i = 0; i < 1000; i++, t += Dt, s += Dt / (2 * Step))
+            {
+                double noise = 0.03 * (rnd.NextDouble() * 2 - 1);
+                var f = a.Update(Walk(t, s + noise));
+                if (i < 300) continue;
+                predErr += Math.Abs(noise);
+                animErr += Math.Abs(PhaseMap.CyclicDelta(f.StridePosition, s));
+                n++;
+            }
+            Assert.That(animErr / n, Is.LessThan(0.6 * predErr / n));
+        }
+
+        [Test]
+        public void StandingReportsStandingForBothFeet()
+        {
+            var a = new GaitAnimatorStateMachine(Map);
+            var f = a.Update(Stand(0));
+            Assert.That(f.State, Is.EqualTo(LocomotionState.Standing));
+            Assert.That(f.Left, Is.EqualTo(GaitPhase.Standing));
+            Assert.That(f.Right, Is.EqualTo(GaitPhase.Standing));
+            Assert.That(f.WalkWeight, Is.EqualTo(0));
+        }
+    }
+}

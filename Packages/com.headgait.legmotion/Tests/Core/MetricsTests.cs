@@ -1,0 +1,94 @@
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    public class MetricsTests
+    {
+        /// <summary>Labels of 10 s of walking at 100 Hz, stride 1.1 s, shifted in time by shiftSeconds.</summary>
+        static void Labels(double shiftSeconds, List<double> times, List<GaitPhase> left, List<GaitPhase> right)
+        {
+            for (int i = 0; i < 1000; i++)
+            {
+                double t = i * 0.01;
+                times?.Add(t);
+                double s = (t - shiftSeconds) / 1.1;
+                bool walking = t - shiftSeconds >= 1.0;
+                left.Add(walking ? PhaseMap.Perry.PhaseAt(Foot.Left, s) : GaitPhase.Standing);
+                right.Add(walking ? PhaseMap.Perry.PhaseAt(Foot.Right, s) : GaitPhase.Standing);
+            }
+        }
+
+        [Test]
+        public void PerfectPredictionScoresZero()
+        {
+            var t = new List<double>(); var l = new List<GaitPhase>(); var r = new List<GaitPhase>();
+            Labels(0, t, l, r);
+            var m = GaitMetrics.Compute(t, l, r, l, r);
+            Assert.That(m.MisclassificationRate, Is.EqualTo(0));
+            Assert.That(m.Rmse, Is.EqualTo(0));
+            Assert.That(m.MeanDelayMs, Is.EqualTo(0));
+            Assert.That(m.MatchedOnsets, Is.EqualTo(m.TrueOnsets));
+            Assert.That(m.Comparisons, Is.EqualTo(2000));
+        }
+
+        [Test]
+        public void LatePredictionHasPositiveDelay()
+        {
+            var t = new List<double>(); var l = new List<GaitPhase>(); var r = new List<GaitPhase>();
+            var pl = new List<GaitPhase>(); var pr = new List<GaitPhase>();
+            Labels(0, t, l, r);
+            Labels(0.04, null, pl, pr);
+            var m = GaitMetrics.Compute(t, l, r, pl, pr);
+            Assert.That(m.MeanDelayMs, Is.EqualTo(40).Within(1));
+            Assert.That(m.MedianDelayMs, Is.EqualTo(40).Within(1));
+            Assert.That(m.MeanInitialContactDelayMs, Is.EqualTo(40).Within(1));
+            // Each foot changes phase 8 times per 1.1 s stride over 9 s of walking; 40 ms late is wrong 4 samples per change.
+            Assert.That(m.MisclassificationRate, Is.EqualTo(0.9 * 8 * 0.04 / 1.1).Within(0.015));
+            Assert.That(m.Cep50, Is.EqualTo(0));
+            Assert.That(m.Cep95, Is.GreaterThanOrEqualTo(1));
+        }
+
+        [Test]
+        public void EarlyPredictionHasNegativeDelay()
+        {
+            var t = new List<double>(); var l = new List<GaitPhase>(); var r = new List<GaitPhase>();
+            var pl = new List<GaitPhase>(); var pr = new List<GaitPhase>();
+            Labels(0.1, t, l, r);
+            Labels(0.03, null, pl, pr);
+            var m = GaitMetrics.Compute(t, l, r, pl, pr);
+            Assert.That(m.MeanDelayMs, Is.EqualTo(-70).Within(1));
+        }
+
+        [Test]
+        public void StandingAgainstWalkingIsTheLargestError()
+        {
+            var t = new List<double> { 0, 0.01, 0.02, 0.03 };
+            var truth = new List<GaitPhase> { GaitPhase.Standing, GaitPhase.Standing, GaitPhase.MidStance, GaitPhase.MidStance };
+            var pred = new List<GaitPhase> { GaitPhase.Standing, GaitPhase.MidSwing, GaitPhase.Standing, GaitPhase.TerminalStance };
+            var m = GaitMetrics.Compute(t, truth, truth, pred, pred);
+            Assert.That(m.MisclassificationRate, Is.EqualTo(0.75));
+            Assert.That(m.ActivityErrorRate, Is.EqualTo(0.5));
+            Assert.That(m.Mae, Is.EqualTo((0 + 4 + 4 + 1) / 4.0));
+            Assert.That(m.Rmse, Is.EqualTo(System.Math.Sqrt((16 + 16 + 1) / 4.0)).Within(1e-12));
+            Assert.That(m.Cep25, Is.EqualTo(0));
+            Assert.That(m.Cep75, Is.EqualTo(4));
+        }
+
+        [Test]
+        public void PercentileIsNearestRank()
+        {
+            var v = new List<double> { 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
+            Assert.That(GaitMetrics.Percentile(v, 0.25), Is.EqualTo(3));
+            Assert.That(GaitMetrics.Percentile(v, 0.95), Is.EqualTo(10));
+            Assert.That(GaitMetrics.Percentile(new List<double>(), 0.5), Is.NaN);
+        }
+
+        [Test]
+        public void MismatchedLengthsAreRefused()
+        {
+            var a = new List<GaitPhase> { GaitPhase.Standing };
+            Assert.That(() => GaitMetrics.Compute(new List<double> { 0, 1 }, a, a, a, a), Throws.ArgumentException);
+        }
+    }
+}

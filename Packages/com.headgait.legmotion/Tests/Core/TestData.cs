@@ -1,0 +1,74 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>The package's committed sample recordings, loaded once per test run.</summary>
+    public static class TestData
+    {
+        static readonly Dictionary<string, Recording> Cache = new Dictionary<string, Recording>();
+        static CorrelationTemplate template;
+        static List<Recording> training;
+
+        public static string Folder
+        {
+            get
+            {
+                string f = SamplePaths.FindRecordingsFolder(TestContext.CurrentContext.TestDirectory);
+                Assert.That(f, Is.Not.Null, "Samples~/Recordings not found above the test directory");
+                return f;
+            }
+        }
+
+        public static Recording Eval(string name) => Load(Path.Combine(Folder, "eval", name + ".csv"));
+
+        public static Recording Load(string path)
+        {
+            lock (Cache)
+            {
+                if (!Cache.TryGetValue(path, out var r))
+                {
+                    r = RecordingCsv.Load(path);
+                    Cache[path] = r;
+                }
+                return r;
+            }
+        }
+
+        public static List<Recording> Training
+        {
+            get
+            {
+                lock (Cache)
+                {
+                    if (training == null)
+                    {
+                        training = new List<Recording>();
+                        foreach (var f in SamplePaths.List(Folder, "train")) training.Add(Load(f));
+                    }
+                    return training;
+                }
+            }
+        }
+
+        public static List<Recording> EvalSet()
+        {
+            var list = new List<Recording>();
+            foreach (var f in SamplePaths.List(Folder, "eval")) list.Add(Load(f));
+            return list;
+        }
+
+        public static CorrelationTemplate Template
+        {
+            get
+            {
+                if (template == null) template = CorrelationTemplate.Train(Training);
+                return template;
+            }
+        }
+
+        public static ImuSample Still(double t) => new ImuSample(t, 0, 0, 9.80665);
+    }
+}
