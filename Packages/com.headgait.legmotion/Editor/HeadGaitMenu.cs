@@ -1,0 +1,66 @@
+using System.IO;
+using System.Text;
+using UnityEditor;
+using UnityEngine;
+
+namespace HeadGait.Editor
+{
+    /// <summary>Tools > HeadGait: evaluate a recording and train a COR template from inside the editor.</summary>
+    public static class HeadGaitMenu
+    {
+        [MenuItem("Tools/HeadGait/Evaluate Recording...")]
+        static void Evaluate()
+        {
+            string csv = EditorUtility.OpenFilePanel("Recording to evaluate (CSV with phase_left/phase_right)", Application.dataPath, "csv");
+            if (string.IsNullOrEmpty(csv)) return;
+            string tpl = EditorUtility.OpenFilePanel("COR template (cancel for THR only)", Path.GetDirectoryName(csv), "txt");
+            try
+            {
+                var rec = RecordingCsv.Load(csv);
+                var report = new StringBuilder($"HeadGait evaluation of {rec.Name} ({rec.Samples.Count} rows, {rec.Warnings.Count} skipped)\n");
+                Append(report, ReplayEvaluator.Run(rec, new ThresholdClassifier()));
+                if (!string.IsNullOrEmpty(tpl)) Append(report, ReplayEvaluator.Run(rec, new CorrelationClassifier(CorrelationTemplate.Load(tpl))));
+                Debug.Log(report.ToString());
+            }
+            catch (System.Exception e) when (e is RecordingFormatException || e is IOException || e is System.FormatException)
+            {
+                EditorUtility.DisplayDialog("HeadGait", e.Message, "OK");
+            }
+        }
+
+        [MenuItem("Tools/HeadGait/Train COR Template...")]
+        static void Train()
+        {
+            string folder = EditorUtility.OpenFolderPanel("Folder of labelled recordings (CSV)", Application.dataPath, "");
+            if (string.IsNullOrEmpty(folder)) return;
+            string output = EditorUtility.SaveFilePanel("Save COR template", Application.dataPath, "cor_template", "txt");
+            if (string.IsNullOrEmpty(output)) return;
+            try
+            {
+                var recordings = new System.Collections.Generic.List<Recording>();
+                foreach (var f in Directory.GetFiles(folder, "*.csv")) recordings.Add(RecordingCsv.Load(f));
+                var template = CorrelationTemplate.Train(recordings);
+                template.Save(output);
+                Debug.Log($"HeadGait: wrote {output} from {template.StepsUsed} steps and {template.StridesUsed} strides.");
+                AssetDatabase.Refresh();
+            }
+            catch (System.Exception e) when (e is RecordingFormatException || e is IOException || e is System.InvalidOperationException)
+            {
+                EditorUtility.DisplayDialog("HeadGait", e.Message, "OK");
+            }
+        }
+
+        static void Append(StringBuilder sb, ReplayResult r)
+        {
+            var m = r.ClassifierMetrics;
+            var a = r.AnimatorMetrics;
+            if (m == null)
+            {
+                sb.AppendLine($"{r.Classifier}: no ground truth; {r.Windows} windows, {r.MeanWindowMs:F3} ms/window");
+                return;
+            }
+            sb.AppendLine($"{r.Classifier}: misclassification {m.MisclassificationRate:P1} (avatar {a.MisclassificationRate:P1}), MAE {m.Mae:F2}, RMSE {m.Rmse:F2}, " +
+                          $"CEP50/95 {m.Cep50}/{m.Cep95}, delay {m.MeanDelayMs:F0} ms, {r.MeanWindowMs:F3} ms/window");
+        }
+    }
+}
