@@ -36,6 +36,13 @@ namespace HeadGait
 
         /// <summary>Longest Start/Finish clip, in step periods, before the state is forced on.</summary>
         public double MaxTransitionSteps = 1.5;
+
+        /// <summary>
+        /// Standing is recognised late (the window still holds the last step). If a foot landed within this stride
+        /// fraction before the Finish begins, that foot closed the gait and the avatar settles where it is
+        /// (for BlendTime) instead of taking another step.
+        /// </summary>
+        public double FinishLookBack = 0.3;
     }
 
     /// <summary>What the avatar's legs should show after one update.</summary>
@@ -98,6 +105,7 @@ namespace HeadGait
         double transitionTarget; // stride position that ends a Start/Finish clip
         double transitionElapsed;
         double transitionStartS;
+        bool settling;           // Finish: the closing foot has already landed; hold the pose, then stand
 
         public GaitAnimatorStateMachine(PhaseMap phaseMap = null, AnimatorSettings settings = null)
         {
@@ -123,6 +131,7 @@ namespace HeadGait
             wrongRun = 0;
             blendRemaining = 0;
             blendTimeLeft = 0;
+            settling = false;
         }
 
         static bool BelievesWalking(LocomotionState st)
@@ -141,7 +150,7 @@ namespace HeadGait
 
             // Advance the animator's own clock.
             double before = s;
-            if (state != LocomotionState.Standing)
+            if (state != LocomotionState.Standing && !settling)
             {
                 s = PhaseMap.Wrap(s + dt / (2 * stepPeriod));
                 if (blendTimeLeft > 0)
@@ -189,6 +198,7 @@ namespace HeadGait
                     }
                     else
                     {
+                        settling = false;
                         BlendTo(wrongS);
                         state = LocomotionState.Walking;
                     }
@@ -198,7 +208,18 @@ namespace HeadGait
                 {
                     if (state == LocomotionState.Walking)
                     {
-                        Foot closing = NextFootToLand(s, out double target);
+                        Foot closing;
+                        double target;
+                        if (LastFootToLand(s, out Foot landed, out double ago) && ago <= settings.FinishLookBack)
+                        {
+                            closing = landed;
+                            target = s;
+                            settling = true;
+                        }
+                        else
+                        {
+                            closing = NextFootToLand(s, out target);
+                        }
                         Enter(closing == Foot.Left ? LocomotionState.FinishWalkLeft : LocomotionState.FinishWalkRight, target);
                     }
                     else
@@ -223,10 +244,11 @@ namespace HeadGait
             if (state != LocomotionState.Standing && state != LocomotionState.Walking && !resync)
             {
                 transitionElapsed += dt;
-                bool landed = Passed(before, s, transitionTarget);
+                bool landed = settling ? transitionElapsed >= settings.BlendTime : Passed(before, s, transitionTarget);
                 bool overdue = transitionElapsed > settings.MaxTransitionSteps * stepPeriod;
                 if (landed || overdue)
                 {
+                    settling = false;
                     if (state == LocomotionState.StartWalkLeft || state == LocomotionState.StartWalkRight) state = LocomotionState.Walking;
                     else state = LocomotionState.Standing;
                 }
@@ -240,7 +262,11 @@ namespace HeadGait
             if (state == LocomotionState.Standing)
                 return new AnimatorFrame(time, state, s, GaitPhase.Standing, GaitPhase.Standing, 0, stepPeriod, resync);
             double weight = 1;
-            if (state != LocomotionState.Walking)
+            if (settling)
+            {
+                weight = 1 - Math.Min(1, transitionElapsed / Math.Max(1e-6, settings.BlendTime));
+            }
+            else if (state != LocomotionState.Walking)
             {
                 double total = PhaseMap.Wrap(transitionTarget - transitionStartS);
                 double done = total > 1e-6 ? Math.Min(1, PhaseMap.Wrap(s - transitionStartS) / total) : 1;
@@ -283,6 +309,16 @@ namespace HeadGait
             }
             target = right;
             return Foot.Right;
+        }
+
+        /// <summary>The foot whose initial contact was passed most recently before stride position x, and how long ago (stride fraction).</summary>
+        bool LastFootToLand(double x, out Foot foot, out double ago)
+        {
+            double left = PhaseMap.Wrap(x - map.StridePositionOfOnset(Foot.Left, GaitPhase.InitialContact));
+            double right = PhaseMap.Wrap(x - map.StridePositionOfOnset(Foot.Right, GaitPhase.InitialContact));
+            foot = left <= right ? Foot.Left : Foot.Right;
+            ago = Math.Min(left, right);
+            return true;
         }
 
         /// <summary>Did the clock pass the target going forward from a to b (a short forward move)?</summary>

@@ -105,8 +105,9 @@ namespace HeadGait.Tests
         {
             var a = new GaitAnimatorStateMachine(Map);
             double t = 0;
-            // Walk until the stride is at 0.3: the right foot is in swing and lands next (at 0.5).
-            double s0 = 0.3 - 200 * Dt / (2 * Step);
+            // Walk until the stride is at 0.4: the left foot landed 0.4 strides ago (too long to be the closing
+            // step), the right foot is in swing and lands next (at 0.5).
+            double s0 = 0.4 - 200 * Dt / (2 * Step);
             var f = WalkFor(a, ref t, s0, 200);
             for (int i = 0; i < 3; i++, t += Dt) f = a.Update(Stand(t));
             Assert.That(f.State, Is.EqualTo(LocomotionState.FinishWalkRight));
@@ -114,8 +115,31 @@ namespace HeadGait.Tests
             for (int i = 0; i < 60; i++, t += Dt) states.Add(a.Update(Stand(t)).State);
             Assert.That(states[states.Count - 1], Is.EqualTo(LocomotionState.Standing));
             int standAt = states.IndexOf(LocomotionState.Standing);
-            // It stood once the right foot had landed: (0.5 - 0.3) of a 1.1 s stride = 0.22 s.
-            Assert.That(standAt * Dt + 3 * Dt, Is.EqualTo(0.22).Within(0.05));
+            // It stood once the right foot had landed: (0.5 - 0.4) of a 1.1 s stride = 0.11 s.
+            Assert.That(standAt * Dt + 3 * Dt, Is.EqualTo(0.11).Within(0.04));
+        }
+
+        [Test]
+        public void FootThatJustLandedClosesTheGaitWithoutAnotherStep()
+        {
+            // Standing is recognised ~0.2 s late, so typically a foot has just landed: here the right foot, at 0.5,
+            // 0.1 strides before the standing predictions. The avatar settles on it instead of stepping again.
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            double s0 = 0.6 - 200 * Dt / (2 * Step);
+            var f = WalkFor(a, ref t, s0, 200);
+            for (int i = 0; i < 3; i++, t += Dt) f = a.Update(Stand(t));
+            Assert.That(f.State, Is.EqualTo(LocomotionState.FinishWalkRight));
+            double frozen = f.StridePosition;
+            int n = 0;
+            while (f.State != LocomotionState.Standing && n < 100)
+            {
+                f = a.Update(Stand(t));
+                t += Dt;
+                n++;
+                if (f.State != LocomotionState.Standing) Assert.That(f.StridePosition, Is.EqualTo(frozen), "the pose holds while settling");
+            }
+            Assert.That(n * Dt, Is.EqualTo(a.Settings.BlendTime).Within(0.02));
         }
 
         [Test]
