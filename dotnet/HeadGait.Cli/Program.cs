@@ -186,7 +186,7 @@ usage:
                 c == null ? "-" : F(c.Mae, "F2"), c == null ? "-" : F(c.Rmse, "F2"),
                 c == null ? "-" : F(c.Cep50, "F0"), c == null ? "-" : F(c.Cep95, "F0"),
                 c == null ? "-" : F(c.MeanDelayMs, "F0"), c == null ? "-" : F(c.MeanInitialContactDelayMs, "F0"),
-                F(r.MeanWindowMs, "F3"), F(r.P95WindowMs, "F3"), r.SkippedSamples + r.FileWarnings));
+                F(r.MeanWindowMs, "F4"), F(r.P95WindowMs, "F4"), r.SkippedSamples + r.FileWarnings));
         }
 
         static void PrintPooled(string name, List<ReplayResult> rs)
@@ -226,7 +226,7 @@ usage:
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
                 "{0,-16} {1,-4} {2,8} {3,8} {4,6} {5,6} {6,5} {7,5} {8,9} {9,9} {10,8} {11,8} {12,6}",
                 "ALL (pooled)", name, F(100 * mis, "F1"), F(100 * anim, "F1"), F(mae, "F2"), F(rmse, "F2"), "", "",
-                F(delay, "F0"), F(ic, "F0"), F(ms, "F3"), "", rs.Sum(r => r.SkippedSamples + r.FileWarnings)));
+                F(delay, "F0"), F(ic, "F0"), F(ms, "F4"), "", rs.Sum(r => r.SkippedSamples + r.FileWarnings)));
         }
 
         static string Trim(string s, int n) => s.Length <= n ? s : s.Substring(0, n);

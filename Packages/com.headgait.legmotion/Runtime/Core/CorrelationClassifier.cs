@@ -19,6 +19,16 @@ namespace HeadGait
         /// lateral evidence of past windows carries over, flipped at each step boundary. 0.985 at 100 Hz keeps about 0.7 s.
         /// </summary>
         public double SideMemory = 0.985;
+
+        /// <summary>
+        /// Once walking, only step periods within this many samples of the running period estimate are considered,
+        /// unless the full search beats them by more than <see cref="RelockMargin"/> in r. A 0.5 s window holds about
+        /// one step, so period and phase can trade off; tracking the slowly-changing period removes that ambiguity.
+        /// Negative disables tracking.
+        /// </summary>
+        public int PeriodTolerance = 3;
+
+        public double RelockMargin = 0.03;
     }
 
     /// <summary>
@@ -73,6 +83,16 @@ namespace HeadGait
             centred = new double[windowLength];
             latCentred = new double[windowLength];
             scores = new double[this.settings.MaxStepSamples + 1];
+            periodBestR = new double[periods];
+            periodBestU = new double[periods];
+        }
+
+        int ArgMax(int from, int to)
+        {
+            int best = -1;
+            for (int i = from; i <= to; i++)
+                if (best < 0 || periodBestR[i] > periodBestR[best]) best = i;
+            return best;
         }
 
         public string Name => "COR";
@@ -85,6 +105,9 @@ namespace HeadGait
         /// <summary>Lateral correlation of the chosen side for the last walking window (diagnostics).</summary>
         public double LastSideCorrelation { get; private set; }
 
+        readonly double[] periodBestR;
+        readonly double[] periodBestU;
+        double periodEstimate;      // running step period while walking (samples)
         double sideEvidence;        // > 0: the current step is the left foot's
         double lastStepFraction = -1;
         double lastWalkingTime = double.NegativeInfinity;
@@ -94,6 +117,7 @@ namespace HeadGait
             LastCorrelation = 0;
             LastSideCorrelation = 0;
             sideEvidence = 0;
+            periodEstimate = 0;
             lastStepFraction = -1;
             lastWalkingTime = double.NegativeInfinity;
         }
@@ -121,9 +145,6 @@ namespace HeadGait
                 return GaitPrediction.Standing(now);
             }
 
-            double best = double.NegativeInfinity;
-            int bestP = 0;
-            double bestU = 0;
             for (int pi = 0; pi < extended.Length; pi++)
             {
                 int P = settings.MinStepSamples + pi;
@@ -144,19 +165,27 @@ namespace HeadGait
                         localK = start;
                     }
                 }
-                if (localBest > best)
-                {
-                    best = localBest;
-                    bestP = P;
-                    // Sub-sample refinement of the offset by a parabola through the neighbours.
-                    double rm = scores[(localK - 1 + P) % P], rp = scores[(localK + 1) % P];
-                    double denom = rm - 2 * localBest + rp;
-                    double frac = denom < 0 ? 0.5 * (rm - rp) / denom : 0;
-                    if (frac > 0.5) frac = 0.5;
-                    if (frac < -0.5) frac = -0.5;
-                    bestU = PhaseMap.Wrap((localK + frac + n - 1) / P);
-                }
+                // Sub-sample refinement of the offset by a parabola through the neighbours.
+                double rm = scores[(localK - 1 + P) % P], rp = scores[(localK + 1) % P];
+                double denom = rm - 2 * localBest + rp;
+                double frac = denom < 0 ? 0.5 * (rm - rp) / denom : 0;
+                if (frac > 0.5) frac = 0.5;
+                if (frac < -0.5) frac = -0.5;
+                periodBestR[pi] = localBest;
+                periodBestU[pi] = PhaseMap.Wrap((localK + frac + n - 1) / P);
             }
+
+            int chosen = ArgMax(0, extended.Length - 1);
+            bool tracking = settings.PeriodTolerance >= 0 && now - lastWalkingTime <= 0.2 && periodEstimate > 0;
+            if (tracking)
+            {
+                int centre = (int)Math.Round(periodEstimate) - settings.MinStepSamples;
+                int near = ArgMax(Math.Max(0, centre - settings.PeriodTolerance), Math.Min(extended.Length - 1, centre + settings.PeriodTolerance));
+                if (near >= 0 && periodBestR[chosen] - periodBestR[near] <= settings.RelockMargin) chosen = near;
+            }
+            double best = periodBestR[chosen];
+            int bestP = settings.MinStepSamples + chosen;
+            double bestU = periodBestU[chosen];
             LastCorrelation = best;
             if (best < settings.MinCorrelation) return GaitPrediction.Standing(now, Math.Max(0, best));
 
@@ -176,6 +205,7 @@ namespace HeadGait
             sideEvidence = settings.SideMemory * sideEvidence + (rLeft - rRight);
             lastStepFraction = bestU;
             lastWalkingTime = now;
+            periodEstimate = tracking ? 0.9 * periodEstimate + 0.1 * bestP : bestP;
             double s = sideEvidence >= 0 ? sLeft : sRight;
             LastSideCorrelation = sideEvidence >= 0 ? rLeft : rRight;
             return GaitPrediction.Walking(now, s, bestP / window.SampleRate, best, template.PhaseMap);
