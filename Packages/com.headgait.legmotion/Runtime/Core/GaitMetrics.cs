@@ -56,7 +56,7 @@ namespace HeadGait
             if (trueLeft.Count != n || trueRight.Count != n || predLeft.Count != n || predRight.Count != n)
                 throw new ArgumentException("All sequences must have the same length.");
             var m = new GaitMetrics();
-            var errors = new List<int>(2 * n);
+            var errors = new List<double>(2 * n);
             int wrongL = 0, wrongR = 0, activityWrong = 0;
             double sum = 0, sumSq = 0;
             for (int i = 0; i < n; i++)
@@ -132,16 +132,7 @@ namespace HeadGait
             return m;
         }
 
-        /// <summary>Nearest-rank percentile of sorted values.</summary>
-        public static double Percentile(IReadOnlyList<int> sorted, double q)
-        {
-            if (sorted.Count == 0) return double.NaN;
-            int rank = (int)Math.Ceiling(q * sorted.Count);
-            if (rank < 1) rank = 1;
-            if (rank > sorted.Count) rank = sorted.Count;
-            return sorted[rank - 1];
-        }
-
+        /// <summary>Nearest-rank percentile of sorted values (NaN when there are none).</summary>
         public static double Percentile(IReadOnlyList<double> sorted, double q)
         {
             if (sorted.Count == 0) return double.NaN;

@@ -81,8 +81,6 @@ namespace HeadGait
             };
             if (perWindow.Count > 0)
             {
-                double sum = 0;
-                foreach (var v in perWindow) sum += v;
                 result.MeanWindowMs = pipeline.ClassifierTime.TotalMilliseconds / pipeline.Windows;
                 perWindow.Sort();
                 result.P95WindowMs = GaitMetrics.Percentile(perWindow, 0.95);
