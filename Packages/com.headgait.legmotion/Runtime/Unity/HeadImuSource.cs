@@ -6,8 +6,13 @@ namespace HeadGait.Unity
     /// <summary>Where the head's acceleration comes from.</summary>
     public enum HeadImuMode
     {
-        /// <summary>XR head device: CommonUsages.deviceAcceleration (gravity removed) and deviceRotation.</summary>
+        /// <summary>
+        /// XR head device: CommonUsages.deviceAcceleration (gravity removed) and deviceRotation; where the runtime
+        /// reports no acceleration (common with OpenXR), falls back to differentiating devicePosition.
+        /// </summary>
         XRDevice = 0,
+        /// <summary>XR head device, acceleration always derived from the tracked pose (devicePosition, deviceRotation).</summary>
+        XRDevicePose = 3,
         /// <summary>A phone in a headset: Input.acceleration, rotated by the phone's mounting orientation.</summary>
         MobileInput = 1,
         /// <summary>Nothing is read; samples are pushed by script (GaitLegAnimator.Push) or a RecordingPlayer.</summary>
@@ -29,6 +34,7 @@ namespace HeadGait.Unity
         [SerializeField] Vector3 deviceToHeadEuler = new Vector3(0f, 0f, -90f);
 
         InputDevice head;
+        readonly PoseAccelerationEstimator fromPose = new PoseAccelerationEstimator();
 
         public HeadImuMode Mode
         {
@@ -42,6 +48,9 @@ namespace HeadGait.Unity
         /// <summary>Frames in which no acceleration could be read.</summary>
         public int MissedFrames { get; private set; }
 
+        /// <summary>True once the XR device gave no acceleration and the tracked pose is being differentiated instead.</summary>
+        public bool UsingPoseFallback { get; private set; }
+
         void OnEnable()
         {
             if (target == null) target = GetComponent<GaitLegAnimator>();
@@ -51,10 +60,11 @@ namespace HeadGait.Unity
         void Update()
         {
             if (target == null || mode == HeadImuMode.External) return;
-            if (TryRead(out Vector3 f))
+            double now = Time.realtimeSinceStartupAsDouble;
+            if (TryRead(now, out double time, out Vector3 f))
             {
                 LastSample = f;
-                target.Push(Time.realtimeSinceStartupAsDouble, f);
+                target.Push(time, f);
             }
             else
             {
@@ -62,8 +72,9 @@ namespace HeadGait.Unity
             }
         }
 
-        bool TryRead(out Vector3 specificForce)
+        bool TryRead(double now, out double time, out Vector3 specificForce)
         {
+            time = now;
             specificForce = default;
             if (mode == HeadImuMode.MobileInput)
             {
@@ -72,9 +83,21 @@ namespace HeadGait.Unity
             }
             if (!head.isValid) head = InputDevices.GetDeviceAtXRNode(XRNode.Head);
             if (!head.isValid) return false;
-            if (!head.TryGetFeatureValue(CommonUsages.deviceAcceleration, out Vector3 linear)) return false;
             if (!head.TryGetFeatureValue(CommonUsages.deviceRotation, out Quaternion rotation)) return false;
-            specificForce = HeadAxes.SpecificForceFromLinear(linear, rotation);
+            if (mode == HeadImuMode.XRDevice && !UsingPoseFallback)
+            {
+                if (head.TryGetFeatureValue(CommonUsages.deviceAcceleration, out Vector3 linear))
+                {
+                    specificForce = HeadAxes.SpecificForceFromLinear(linear, rotation);
+                    return true;
+                }
+                UsingPoseFallback = true;
+                Debug.LogWarning("HeadGait: the XR head device reports no acceleration; differentiating its tracked position instead.", this);
+            }
+            if (!head.TryGetFeatureValue(CommonUsages.devicePosition, out Vector3 position)) return false;
+            if (!fromPose.Push(now, position.x, position.y, position.z, rotation.x, rotation.y, rotation.z, rotation.w, out ImuSample sample)) return false;
+            time = sample.Time;
+            specificForce = new Vector3((float)sample.X, (float)sample.Y, (float)sample.Z);
             return true;
         }
     }

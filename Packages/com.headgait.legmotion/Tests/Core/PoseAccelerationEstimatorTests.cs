@@ -1,0 +1,85 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    public class PoseAccelerationEstimatorTests
+    {
+        const double G = 9.80665;
+
+        static double[] Yaw(double degrees)
+        {
+            double h = degrees * Math.PI / 360;
+            return new[] { 0, Math.Sin(h), 0, Math.Cos(h) };
+        }
+
+        [Test]
+        public void StillHeadReadsGravityUpWhateverItsYaw()
+        {
+            foreach (double yaw in new[] { 0.0, 45, -120 })
+            {
+                var e = new PoseAccelerationEstimator();
+                var q = Yaw(yaw);
+                ImuSample s = default;
+                bool got = false;
+                for (int i = 0; i < 5; i++) got = e.Push(i / 72.0, 0.3, 1.7, -0.2, q[0], q[1], q[2], q[3], out s);
+                Assert.That(got, Is.True);
+                Assert.That(s.Z, Is.EqualTo(G).Within(1e-9));
+                Assert.That(s.X, Is.EqualTo(0).Within(1e-9));
+                Assert.That(s.Y, Is.EqualTo(0).Within(1e-9));
+            }
+        }
+
+        [Test]
+        public void RecoversTheAccelerationOfABobbingWalkFromJitteredFrames()
+        {
+            // Head moving along Unity +x (it faces +x: yaw 90), bobbing up and down at 1.9 Hz and swaying along z.
+            var rnd = new Random(4);
+            var e = new PoseAccelerationEstimator();
+            var q = Yaw(90);
+            double w1 = 2 * Math.PI * 1.9, w2 = 2 * Math.PI * 0.95;
+            double t = 0, worst = 0;
+            int n = 0;
+            for (int i = 0; i < 400; i++)
+            {
+                t += 1 / 72.0 + 0.001 * (rnd.NextDouble() - 0.5);
+                double px = 1.3 * t, py = 1.7 + 0.02 * Math.Sin(w1 * t), pz = 0.015 * Math.Sin(w2 * t);
+                if (!e.Push(t, px, py, pz, q[0], q[1], q[2], q[3], out var s)) continue;
+                double ts = s.Time;
+                double up = -0.02 * w1 * w1 * Math.Sin(w1 * ts) + G;
+                double along = 0;                                   // constant speed forward
+                double sideZ = -0.015 * w2 * w2 * Math.Sin(w2 * ts); // along Unity +z = the head's left when facing +x
+                worst = Math.Max(worst, Math.Abs(s.Z - up));
+                worst = Math.Max(worst, Math.Abs(s.X - along));
+                worst = Math.Max(worst, Math.Abs(s.Y - sideZ));
+                n++;
+            }
+            Assert.That(n, Is.EqualTo(398));
+            Assert.That(worst, Is.LessThan(0.05));
+        }
+
+        [Test]
+        public void SkipsBadPosesAndRestartsAfterAHole()
+        {
+            var e = new PoseAccelerationEstimator();
+            var outs = new List<double>();
+            void Push(double t, double y)
+            {
+                if (e.Push(t, 0, y, 0, 0, 0, 0, 1, out var s)) outs.Add(s.Time);
+            }
+            Push(0.00, 1.7);
+            Push(0.01, double.NaN);
+            Push(0.01, 1.7);
+            Push(0.005, 1.7);   // backwards
+            Push(0.02, 1.7);
+            Assert.That(outs, Is.EqualTo(new[] { 0.01 }));
+            Push(0.50, 1.7);    // hole: start again
+            Push(0.51, 1.7);
+            Assert.That(outs.Count, Is.EqualTo(1));
+            Push(0.52, 1.7);
+            Assert.That(outs, Is.EqualTo(new[] { 0.01, 0.51 }));
+            Assert.That(e.Skipped, Is.EqualTo(2));
+        }
+    }
+}
