@@ -148,8 +148,8 @@ usage:
 
             var results = new List<ReplayResult>();
             string header = string.Format(CultureInfo.InvariantCulture,
-                "{0,-16} {1,-4} {2,8} {3,8} {4,6} {5,6} {6,5} {7,5} {8,9} {9,9} {10,8} {11,8} {12,6}",
-                "recording", "clf", "miscl%", "anim%", "MAE", "RMSE", "CEP50", "CEP95", "delay_ms", "IC_ms", "ms/win", "p95_ms", "skip");
+                "{0,-16} {1,-4} {2,7} {3,7} {4,5} {5,5} {6,5} {7,11} {8,8} {9,6} {10,7} {11,7} {12,8} {13,5}",
+                "recording", "clf", "miscl%", "anim%", "MAE", "MSE", "RMSE", "CEP25-95", "delay_ms", "IC_ms", "ms/win", "p95_ms", "us/smpl", "skip");
             Console.WriteLine(header);
             Console.WriteLine(new string('-', header.Length));
             foreach (var make in classifiers)
@@ -166,7 +166,8 @@ usage:
             foreach (var group in results.GroupBy(r => r.Classifier)) PrintPooled(group.Key, group.ToList());
             Console.WriteLine();
             Console.WriteLine("miscl% = classifier output, anim% = avatar (animator) output, both per foot and sample against ground truth;");
-            Console.WriteLine("MAE/RMSE/CEP in phase steps (cyclic, standing vs walking = 4); delay = predicted minus true phase onset (negative = early).");
+            Console.WriteLine("MAE/MSE/RMSE/CEP25/50/75/95 in phase steps (cyclic, standing vs walking = 4); delay = predicted minus true phase onset (negative = early);");
+            Console.WriteLine("ms/win = classifier time per window (mean, p95); us/smpl = whole pipeline (resampling, classifier, animator) per input sample.");
             Console.WriteLine("Paper (real data): THR 51% / +60 ms, COR 8.7% / -30 ms / 0.67 ms per window, SVM 5.6% / -70 ms, BLSTM 1.6% / -140 ms / 17.9 ms.");
             Console.WriteLine("These figures come from the package's generated recordings, not from people: they show the pipeline works end to end, not that it beats the paper.");
             return 0;
@@ -179,14 +180,14 @@ usage:
             var c = r.ClassifierMetrics;
             var a = r.AnimatorMetrics;
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                "{0,-16} {1,-4} {2,8} {3,8} {4,6} {5,6} {6,5} {7,5} {8,9} {9,9} {10,8} {11,8} {12,6}",
+                "{0,-16} {1,-4} {2,7} {3,7} {4,5} {5,5} {6,5} {7,11} {8,8} {9,6} {10,7} {11,7} {12,8} {13,5}",
                 Trim(r.Recording, 16), r.Classifier,
                 c == null ? "-" : F(100 * c.MisclassificationRate, "F1"),
                 a == null ? "-" : F(100 * a.MisclassificationRate, "F1"),
-                c == null ? "-" : F(c.Mae, "F2"), c == null ? "-" : F(c.Rmse, "F2"),
-                c == null ? "-" : F(c.Cep50, "F0"), c == null ? "-" : F(c.Cep95, "F0"),
+                c == null ? "-" : F(c.Mae, "F2"), c == null ? "-" : F(c.Mse, "F2"), c == null ? "-" : F(c.Rmse, "F2"),
+                c == null ? "-" : $"{c.Cep25:F0}/{c.Cep50:F0}/{c.Cep75:F0}/{c.Cep95:F0}",
                 c == null ? "-" : F(c.MeanDelayMs, "F0"), c == null ? "-" : F(c.MeanInitialContactDelayMs, "F0"),
-                F(r.MeanWindowMs, "F4"), F(r.P95WindowMs, "F4"), r.SkippedSamples + r.FileWarnings));
+                F(r.MeanWindowMs, "F4"), F(r.P95WindowMs, "F4"), F(1000 * r.MeanSampleMs, "F1"), r.SkippedSamples + r.FileWarnings));
         }
 
         static void PrintPooled(string name, List<ReplayResult> rs)
@@ -218,15 +219,18 @@ usage:
             double mis = Weighted(m => m.MisclassificationRate, m => m.Comparisons);
             double anim = WeightedAnim(m => m.MisclassificationRate);
             double mae = Weighted(m => m.Mae, m => m.Comparisons);
-            double rmse = Math.Sqrt(Weighted(m => m.Mse, m => m.Comparisons));
+            double mse = Weighted(m => m.Mse, m => m.Comparisons);
+            double rmse = Math.Sqrt(mse);
             double delay = Weighted(m => m.MeanDelayMs, m => m.MatchedOnsets);
             double ic = Weighted(m => m.MeanInitialContactDelayMs, m => m.MatchedOnsets);
             double windows = rs.Sum(r => (double)r.Windows);
             double ms = windows > 0 ? rs.Sum(r => r.MeanWindowMs * r.Windows) / windows : double.NaN;
+            double samples = rs.Sum(r => (double)r.InputSamples);
+            double us = samples > 0 ? 1000 * rs.Sum(r => r.MeanSampleMs * r.InputSamples) / samples : double.NaN;
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                "{0,-16} {1,-4} {2,8} {3,8} {4,6} {5,6} {6,5} {7,5} {8,9} {9,9} {10,8} {11,8} {12,6}",
-                "ALL (pooled)", name, F(100 * mis, "F1"), F(100 * anim, "F1"), F(mae, "F2"), F(rmse, "F2"), "", "",
-                F(delay, "F0"), F(ic, "F0"), F(ms, "F4"), "", rs.Sum(r => r.SkippedSamples + r.FileWarnings)));
+                "{0,-16} {1,-4} {2,7} {3,7} {4,5} {5,5} {6,5} {7,11} {8,8} {9,6} {10,7} {11,7} {12,8} {13,5}",
+                "ALL (pooled)", name, F(100 * mis, "F1"), F(100 * anim, "F1"), F(mae, "F2"), F(mse, "F2"), F(rmse, "F2"), "",
+                F(delay, "F0"), F(ic, "F0"), F(ms, "F4"), "", F(us, "F1"), rs.Sum(r => r.SkippedSamples + r.FileWarnings)));
         }
 
         static string Trim(string s, int n) => s.Length <= n ? s : s.Substring(0, n);
