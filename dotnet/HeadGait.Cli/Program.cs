@@ -164,6 +164,14 @@ usage:
             }
             Console.WriteLine(new string('-', header.Length));
             foreach (var group in results.GroupBy(r => r.Classifier)) PrintPooled(group.Key, group.ToList());
+            foreach (var r in results.Where(r => r.ClassifierMetrics == null && r.Windows > 0))
+            {
+                // No ground truth: say what the avatar did instead.
+                var parts = Enum.GetValues(typeof(LocomotionState)).Cast<LocomotionState>()
+                    .Where(st => r.StateCounts.ContainsKey(st))
+                    .Select(st => $"{st} {100.0 * r.StateCounts[st] / r.Windows:F0}%");
+                Console.WriteLine($"{r.Recording} ({r.Classifier}, no labels): avatar time in {string.Join(", ", parts)}");
+            }
             Console.WriteLine();
             Console.WriteLine("miscl% = classifier output, anim% = avatar (animator) output, both per foot and sample against ground truth;");
             Console.WriteLine("MAE/MSE/RMSE/CEP25/50/75/95 in phase steps (cyclic, standing vs walking = 4); delay = predicted minus true phase onset (negative = early);");
