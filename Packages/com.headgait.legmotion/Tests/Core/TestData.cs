@@ -70,5 +70,23 @@ namespace HeadGait.Tests
         }
 
         public static ImuSample Still(double t) => new ImuSample(t, 0, 0, 9.80665);
+
+        /// <summary>
+        /// A folder of the real-motion data beside the repository (../shared/data/SUB, or $HEADGAIT_DATA/SUB). The data is
+        /// not part of the package (licence), so a test that needs it is skipped with the path it looked for when it is absent.
+        /// </summary>
+        public static string SharedData(string sub)
+        {
+            var env = Environment.GetEnvironmentVariable("HEADGAIT_DATA");
+            var candidates = new List<string>();
+            if (!string.IsNullOrEmpty(env)) candidates.Add(Path.Combine(env, sub));
+            string package = Path.GetDirectoryName(Path.GetDirectoryName(Folder)); // .../Packages/com.headgait.legmotion
+            string repo = Path.GetDirectoryName(Path.GetDirectoryName(package));
+            candidates.Add(Path.Combine(Path.GetDirectoryName(repo), "shared", "data", sub));
+            foreach (var c in candidates)
+                if (Directory.Exists(c)) return c;
+            Assert.Ignore($"real-motion data not found (looked for {string.Join(" and ", candidates)})");
+            return null;
+        }
     }
 }

@@ -3,100 +3,205 @@ using System.Collections.Generic;
 
 namespace HeadGait
 {
-    /// <summary>Accuracy and timing of predicted per-foot phases against ground truth.</summary>
+    /// <summary>
+    /// Accuracy and timing of predicted per-foot phases against ground truth. Tallies are kept raw, so the
+    /// metrics of several recordings pool exactly (<see cref="Pool"/>) instead of averaging averages.
+    /// </summary>
     public sealed class GaitMetrics
     {
+        /// <summary>Largest distance between a true and a predicted foot contact that still counts as the same step (s).</summary>
+        public const double StepMatchSeconds = 0.25;
+
+        long samples, wrongLeft, wrongRight, wrongBeyondAdjacent, activityWrong;
+        readonly long[] errorHistogram = new long[GaitPhases.WalkingPhaseCount / 2 + 1];
+        long walkingSamples, walkingShownStanding, standingSamples, standingShownWalking;
+        readonly List<double> onsetDelaysMs = new List<double>();
+        readonly List<double> icOnsetDelaysMs = new List<double>();
+        int trueOnsets;
+        int trueSteps, predictedSteps, matchedSteps, matchedSameFoot;
+        readonly List<double> stepTimingMs = new List<double>();
+
         /// <summary>Labelled (sample, foot) pairs compared.</summary>
-        public int Comparisons { get; private set; }
+        public long Comparisons => 2 * samples;
 
         /// <summary>Share of (sample, foot) pairs whose predicted phase differs from the truth (Standing included).</summary>
-        public double MisclassificationRate { get; private set; }
+        public double MisclassificationRate => Ratio(wrongLeft + wrongRight, Comparisons);
 
-        public double MisclassificationLeft { get; private set; }
-        public double MisclassificationRight { get; private set; }
+        public double MisclassificationLeft => Ratio(wrongLeft, samples);
+        public double MisclassificationRight => Ratio(wrongRight, samples);
+
+        /// <summary>The same, counting a prediction one phase off (cyclic neighbour) as correct.</summary>
+        public double MisclassificationBeyondAdjacent => Ratio(wrongBeyondAdjacent, Comparisons);
 
         /// <summary>Share of samples whose walking/standing call is wrong.</summary>
-        public double ActivityErrorRate { get; private set; }
+        public double ActivityErrorRate => Ratio(activityWrong, samples);
+
+        /// <summary>Share of truly walking samples predicted (or shown) as standing.</summary>
+        public double WalkingAsStanding => Ratio(walkingShownStanding, walkingSamples);
+
+        /// <summary>Share of truly standing samples predicted (or shown) as walking.</summary>
+        public double StandingAsWalking => Ratio(standingShownWalking, standingSamples);
+
+        public long WalkingSamples => walkingSamples;
+        public long StandingSamples => standingSamples;
 
         /// <summary>Errors in phase steps (<see cref="GaitPhases.Distance"/>): cyclic 0..4, Standing vs walking = 4.</summary>
-        public double Mae { get; private set; }
-        public double Mse { get; private set; }
-        public double Rmse { get; private set; }
+        public double Mae
+        {
+            get
+            {
+                double s = 0;
+                for (int d = 0; d < errorHistogram.Length; d++) s += d * errorHistogram[d];
+                return Ratio(s, Comparisons);
+            }
+        }
+
+        public double Mse
+        {
+            get
+            {
+                double s = 0;
+                for (int d = 0; d < errorHistogram.Length; d++) s += (double)d * d * errorHistogram[d];
+                return Ratio(s, Comparisons);
+            }
+        }
+
+        public double Rmse => Math.Sqrt(Mse);
 
         /// <summary>CEP25/50/75/95: the absolute phase-step error that 25/50/75/95 % of comparisons stay within.</summary>
-        public double Cep25 { get; private set; }
-        public double Cep50 { get; private set; }
-        public double Cep75 { get; private set; }
-        public double Cep95 { get; private set; }
+        public double Cep25 => HistogramPercentile(0.25);
+        public double Cep50 => HistogramPercentile(0.50);
+        public double Cep75 => HistogramPercentile(0.75);
+        public double Cep95 => HistogramPercentile(0.95);
 
         /// <summary>
         /// Mean and median delay (ms) of predicted phase onsets after the true ones: each true walking-phase
-        /// onset is matched to the nearest predicted onset of the same foot and phase within the window.
+        /// onset is matched to the nearest predicted onset of the same foot and phase within 0.3 s.
         /// Negative: the prediction came early.
         /// </summary>
-        public double MeanDelayMs { get; private set; }
-        public double MedianDelayMs { get; private set; }
+        public double MeanDelayMs => Mean(onsetDelaysMs);
+        public double MedianDelayMs => Median(onsetDelaysMs);
 
-        /// <summary>The same, for initial contacts only.</summary>
-        public double MeanInitialContactDelayMs { get; private set; }
+        /// <summary>The same, for initial-contact onsets only.</summary>
+        public double MeanInitialContactDelayMs => Mean(icOnsetDelaysMs);
 
-        public int TrueOnsets { get; private set; }
-        public int MatchedOnsets { get; private set; }
+        public int TrueOnsets => trueOnsets;
+        public int MatchedOnsets => onsetDelaysMs.Count;
 
         /// <summary>
-        /// Compares aligned sequences. <paramref name="maxMatchSeconds"/> bounds the delay matching window
-        /// (0.3 s: less than half a stride, so a phase cannot match its neighbour stride's copy).
+        /// Steps: a foot's contact (its phase entering stance from swing). True contacts are matched one to one
+        /// with predicted contacts of either foot within <see cref="StepMatchSeconds"/>, nearest first.
         /// </summary>
+        public int TrueSteps => trueSteps;
+        public int PredictedSteps => predictedSteps;
+        public int MatchedSteps => matchedSteps;
+        public double StepRecall => Ratio(matchedSteps, trueSteps);
+        public double StepPrecision => Ratio(matchedSteps, predictedSteps);
+
+        /// <summary>Share of matched steps whose predicted contact is on the same foot as the true one.</summary>
+        public double StepRightFoot => Ratio(matchedSameFoot, matchedSteps);
+
+        /// <summary>Predicted minus true contact time of matched steps (ms): mean and standard deviation.</summary>
+        public double StepTimingMeanMs => Mean(stepTimingMs);
+        public double StepTimingSdMs
+        {
+            get
+            {
+                if (stepTimingMs.Count < 2) return double.NaN;
+                double m = Mean(stepTimingMs), s = 0;
+                foreach (var v in stepTimingMs) s += (v - m) * (v - m);
+                return Math.Sqrt(s / (stepTimingMs.Count - 1));
+            }
+        }
+
+        /// <summary>Compares aligned sequences of one recording.</summary>
         public static GaitMetrics Compute(IReadOnlyList<double> times,
             IReadOnlyList<GaitPhase> trueLeft, IReadOnlyList<GaitPhase> trueRight,
-            IReadOnlyList<GaitPhase> predLeft, IReadOnlyList<GaitPhase> predRight,
-            double maxMatchSeconds = 0.3)
+            IReadOnlyList<GaitPhase> predLeft, IReadOnlyList<GaitPhase> predRight)
+        {
+            var m = new GaitMetrics();
+            m.Add(times, trueLeft, trueRight, predLeft, predRight);
+            return m;
+        }
+
+        /// <summary>Adds one recording's aligned sequences to the tallies.</summary>
+        public void Add(IReadOnlyList<double> times,
+            IReadOnlyList<GaitPhase> trueLeft, IReadOnlyList<GaitPhase> trueRight,
+            IReadOnlyList<GaitPhase> predLeft, IReadOnlyList<GaitPhase> predRight)
         {
             int n = times.Count;
             if (trueLeft.Count != n || trueRight.Count != n || predLeft.Count != n || predRight.Count != n)
                 throw new ArgumentException("All sequences must have the same length.");
-            var m = new GaitMetrics();
-            var errors = new List<double>(2 * n);
-            int wrongL = 0, wrongR = 0, activityWrong = 0;
-            double sum = 0, sumSq = 0;
             for (int i = 0; i < n; i++)
             {
                 int dl = GaitPhases.Distance(trueLeft[i], predLeft[i]);
                 int dr = GaitPhases.Distance(trueRight[i], predRight[i]);
-                if (dl != 0) wrongL++;
-                if (dr != 0) wrongR++;
-                if ((trueLeft[i] == GaitPhase.Standing) != (predLeft[i] == GaitPhase.Standing)) activityWrong++;
-                errors.Add(dl);
-                errors.Add(dr);
-                sum += dl + dr;
-                sumSq += dl * dl + dr * dr;
+                if (dl != 0) wrongLeft++;
+                if (dr != 0) wrongRight++;
+                if (dl > 1) wrongBeyondAdjacent++;
+                if (dr > 1) wrongBeyondAdjacent++;
+                errorHistogram[dl]++;
+                errorHistogram[dr]++;
+                bool trueStanding = trueLeft[i] == GaitPhase.Standing;
+                bool predStanding = predLeft[i] == GaitPhase.Standing;
+                if (trueStanding != predStanding) activityWrong++;
+                if (trueStanding)
+                {
+                    standingSamples++;
+                    if (!predStanding) standingShownWalking++;
+                }
+                else
+                {
+                    walkingSamples++;
+                    if (predStanding) walkingShownStanding++;
+                }
             }
-            m.Comparisons = 2 * n;
-            if (n > 0)
-            {
-                m.MisclassificationLeft = (double)wrongL / n;
-                m.MisclassificationRight = (double)wrongR / n;
-                m.MisclassificationRate = (double)(wrongL + wrongR) / (2 * n);
-                m.ActivityErrorRate = (double)activityWrong / n;
-                m.Mae = sum / (2 * n);
-                m.Mse = sumSq / (2 * n);
-                m.Rmse = Math.Sqrt(m.Mse);
-                errors.Sort();
-                m.Cep25 = Percentile(errors, 0.25);
-                m.Cep50 = Percentile(errors, 0.50);
-                m.Cep75 = Percentile(errors, 0.75);
-                m.Cep95 = Percentile(errors, 0.95);
-            }
+            samples += n;
+            AddOnsetDelays(times, trueLeft, trueRight, predLeft, predRight);
+            AddSteps(times, trueLeft, trueRight, predLeft, predRight);
+        }
 
+        /// <summary>The tallies of several recordings together.</summary>
+        public static GaitMetrics Pool(IEnumerable<GaitMetrics> parts)
+        {
+            var m = new GaitMetrics();
+            foreach (var p in parts)
+            {
+                if (p == null) continue;
+                m.samples += p.samples;
+                m.wrongLeft += p.wrongLeft;
+                m.wrongRight += p.wrongRight;
+                m.wrongBeyondAdjacent += p.wrongBeyondAdjacent;
+                m.activityWrong += p.activityWrong;
+                for (int d = 0; d < m.errorHistogram.Length; d++) m.errorHistogram[d] += p.errorHistogram[d];
+                m.walkingSamples += p.walkingSamples;
+                m.walkingShownStanding += p.walkingShownStanding;
+                m.standingSamples += p.standingSamples;
+                m.standingShownWalking += p.standingShownWalking;
+                m.onsetDelaysMs.AddRange(p.onsetDelaysMs);
+                m.icOnsetDelaysMs.AddRange(p.icOnsetDelaysMs);
+                m.trueOnsets += p.trueOnsets;
+                m.trueSteps += p.trueSteps;
+                m.predictedSteps += p.predictedSteps;
+                m.matchedSteps += p.matchedSteps;
+                m.matchedSameFoot += p.matchedSameFoot;
+                m.stepTimingMs.AddRange(p.stepTimingMs);
+            }
+            return m;
+        }
+
+        void AddOnsetDelays(IReadOnlyList<double> times,
+            IReadOnlyList<GaitPhase> trueLeft, IReadOnlyList<GaitPhase> trueRight,
+            IReadOnlyList<GaitPhase> predLeft, IReadOnlyList<GaitPhase> predRight)
+        {
+            // 0.3 s: less than half a stride, so a phase cannot match its neighbour stride's copy.
+            const double maxMatchSeconds = 0.3;
             var truth = PhaseEvents.Onsets(times, trueLeft, trueRight);
             var pred = PhaseEvents.Onsets(times, predLeft, predRight);
-            var delays = new List<double>();
-            double icSum = 0;
-            int icCount = 0, total = 0;
             foreach (var t in truth)
             {
                 if (t.Phase == GaitPhase.Standing) continue;
-                total++;
+                trueOnsets++;
                 double best = double.PositiveInfinity;
                 foreach (var p in pred)
                 {
@@ -106,30 +211,68 @@ namespace HeadGait
                     if (p.Time > t.Time + maxMatchSeconds) break;
                 }
                 if (double.IsInfinity(best)) continue;
-                delays.Add(best * 1000.0);
-                if (t.Phase == GaitPhase.InitialContact)
+                onsetDelaysMs.Add(best * 1000.0);
+                if (t.Phase == GaitPhase.InitialContact) icOnsetDelaysMs.Add(best * 1000.0);
+            }
+        }
+
+        void AddSteps(IReadOnlyList<double> times,
+            IReadOnlyList<GaitPhase> trueLeft, IReadOnlyList<GaitPhase> trueRight,
+            IReadOnlyList<GaitPhase> predLeft, IReadOnlyList<GaitPhase> predRight)
+        {
+            var truth = PhaseEvents.Contacts(times, trueLeft, trueRight);
+            var pred = PhaseEvents.Contacts(times, predLeft, predRight);
+            trueSteps += truth.Count;
+            predictedSteps += pred.Count;
+            var used = new bool[pred.Count];
+            int first = 0;
+            foreach (var t in truth)
+            {
+                while (first < pred.Count && pred[first].Time < t.Time - StepMatchSeconds) first++;
+                int best = -1;
+                for (int j = first; j < pred.Count && pred[j].Time <= t.Time + StepMatchSeconds; j++)
                 {
-                    icSum += best * 1000.0;
-                    icCount++;
+                    if (used[j]) continue;
+                    if (best < 0 || Math.Abs(pred[j].Time - t.Time) < Math.Abs(pred[best].Time - t.Time)) best = j;
                 }
+                if (best < 0) continue;
+                used[best] = true;
+                matchedSteps++;
+                if (pred[best].Foot == t.Foot) matchedSameFoot++;
+                stepTimingMs.Add((pred[best].Time - t.Time) * 1000.0);
             }
-            m.TrueOnsets = total;
-            m.MatchedOnsets = delays.Count;
-            if (delays.Count > 0)
+        }
+
+        double HistogramPercentile(double q)
+        {
+            long total = Comparisons;
+            if (total == 0) return double.NaN;
+            long rank = Math.Max(1, (long)Math.Ceiling(q * total));
+            long seen = 0;
+            for (int d = 0; d < errorHistogram.Length; d++)
             {
-                double ds = 0;
-                foreach (var d in delays) ds += d;
-                m.MeanDelayMs = ds / delays.Count;
-                delays.Sort();
-                m.MedianDelayMs = delays[delays.Count / 2];
+                seen += errorHistogram[d];
+                if (seen >= rank) return d;
             }
-            else
-            {
-                m.MeanDelayMs = double.NaN;
-                m.MedianDelayMs = double.NaN;
-            }
-            m.MeanInitialContactDelayMs = icCount > 0 ? icSum / icCount : double.NaN;
-            return m;
+            return errorHistogram.Length - 1;
+        }
+
+        static double Ratio(double a, double b) => b > 0 ? a / b : double.NaN;
+
+        static double Mean(List<double> v)
+        {
+            if (v.Count == 0) return double.NaN;
+            double s = 0;
+            foreach (var x in v) s += x;
+            return s / v.Count;
+        }
+
+        static double Median(List<double> v)
+        {
+            if (v.Count == 0) return double.NaN;
+            var sorted = new List<double>(v);
+            sorted.Sort();
+            return sorted[sorted.Count / 2];
         }
 
         /// <summary>Nearest-rank percentile of sorted values (NaN when there are none).</summary>

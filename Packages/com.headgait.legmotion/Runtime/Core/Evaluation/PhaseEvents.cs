@@ -41,6 +41,27 @@ namespace HeadGait
             return list;
         }
 
+        /// <summary>
+        /// Foot contacts in a labelled sequence: a foot's phase entering stance (IC..PSW) straight from swing
+        /// (ISW..TSW). Counting any swing-to-stance change, not only entries into IC, keeps a contact whose
+        /// 20 ms IC phase was skipped by a prediction; a foot that was standing does not step by starting to walk.
+        /// </summary>
+        public static List<PhaseOnset> Contacts(IReadOnlyList<double> times, IReadOnlyList<GaitPhase> left, IReadOnlyList<GaitPhase> right)
+        {
+            var list = new List<PhaseOnset>();
+            for (int f = 0; f < 2; f++)
+            {
+                var labels = f == 0 ? left : right;
+                for (int i = 1; i < labels.Count; i++)
+                {
+                    if (GaitPhases.IsStance(labels[i]) && GaitPhases.IsSwing(labels[i - 1]))
+                        list.Add(new PhaseOnset((Foot)f, labels[i], times[i]));
+                }
+            }
+            list.Sort((a, b) => a.Time.CompareTo(b.Time));
+            return list;
+        }
+
         /// <summary>Truth onsets of a recording, using only labelled rows with finite, increasing timestamps.</summary>
         public static List<PhaseOnset> TruthOnsets(Recording recording)
         {

@@ -1,0 +1,145 @@
+using System;
+using System.Collections.Generic;
+using HeadGait.Synthetic;
+
+namespace HeadGait.Training
+{
+    /// <summary>Ranges of the random changes <see cref="RecordingAugmentation"/> makes to a training recording.</summary>
+    public sealed class AugmentationSettings
+    {
+        /// <summary>Time is stretched by a factor drawn from this range (above 1: slower walking).</summary>
+        public double MinStretch = 0.8, MaxStretch = 1.3;
+
+        /// <summary>
+        /// A slower walk has smaller accelerations: the dynamic part is divided by stretch^p with p drawn from this
+        /// range (2 would be an exact slow-motion replay; people who walk slowly do not move quite that softly).
+        /// </summary>
+        public double MinAmplitudeExponent = 0.5, MaxAmplitudeExponent = 2.0;
+
+        /// <summary>
+        /// Extra scale of the forward and lateral dynamic parts. Mocap-derived head acceleration is about twice as
+        /// large sideways and forwards as a real ear-worn sensor's, so scaling down keeps classifiers from leaning on it.
+        /// </summary>
+        public double MinLateralScale = 0.4, MaxLateralScale = 1.1;
+        public double MinForwardScale = 0.5, MaxForwardScale = 1.1;
+
+        /// <summary>Seconds of the moving average that separates the slow part (gravity through head tilt) from the dynamic part.</summary>
+        public double SlowWindowSeconds = 1.0;
+    }
+
+    /// <summary>
+    /// Makes variants of a labelled recording for training: resampled to 100 Hz, the dynamic part of the acceleration
+    /// (what remains after a 1 s moving average) scaled per axis, and time stretched with its labels.
+    /// </summary>
+    public static class RecordingAugmentation
+    {
+        const double Rate = 100.0;
+
+        public static Recording Augment(Recording source, DeterministicRandom random, AugmentationSettings settings = null)
+        {
+            var s = settings ?? new AugmentationSettings();
+            double stretch = random.Uniform(s.MinStretch, s.MaxStretch);
+            double exponent = random.Uniform(s.MinAmplitudeExponent, s.MaxAmplitudeExponent);
+            double forward = random.Uniform(s.MinForwardScale, s.MaxForwardScale);
+            double lateral = random.Uniform(s.MinLateralScale, s.MaxLateralScale);
+            return Transform(source, stretch, Math.Pow(stretch, -exponent) * forward, Math.Pow(stretch, -exponent) * lateral,
+                Math.Pow(stretch, -exponent), s.SlowWindowSeconds,
+                FormattableName(source.Name, stretch, forward, lateral));
+        }
+
+        static string FormattableName(string name, double stretch, double forward, double lateral)
+            => string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0}~x{1:F2}f{2:F2}l{3:F2}", name, stretch, forward, lateral);
+
+        /// <summary>
+        /// The deterministic core of <see cref="Augment"/>: stretches time by <paramref name="stretch"/> and multiplies the
+        /// dynamic part of x (forward), y (lateral) and z (up) by the given gains.
+        /// </summary>
+        public static Recording Transform(Recording source, double stretch, double forwardGain, double lateralGain, double verticalGain,
+            double slowWindowSeconds, string name)
+        {
+            if (!(stretch > 0)) throw new ArgumentOutOfRangeException(nameof(stretch));
+            var rows = Uniform(source);
+            var output = new List<RecordedSample>();
+            if (rows.Count < 2) return new Recording(name, output);
+            int n = rows.Count;
+            var acc = new double[3][];
+            for (int k = 0; k < 3; k++) acc[k] = new double[n];
+            for (int i = 0; i < n; i++)
+            {
+                acc[0][i] = rows[i].Imu.X;
+                acc[1][i] = rows[i].Imu.Y;
+                acc[2][i] = rows[i].Imu.Z;
+            }
+            int half = Math.Max(1, (int)Math.Round(slowWindowSeconds * Rate / 2));
+            double[] gains = { forwardGain, lateralGain, verticalGain };
+            for (int k = 0; k < 3; k++)
+            {
+                var slow = MovingAverage(acc[k], half);
+                for (int i = 0; i < n; i++) acc[k][i] = slow[i] + gains[k] * (acc[k][i] - slow[i]);
+            }
+
+            double t0 = rows[0].Imu.Time;
+            double duration = (n - 1) / Rate * stretch;
+            int m = (int)Math.Floor(duration * Rate + 1e-9) + 1;
+            for (int j = 0; j < m; j++)
+            {
+                double u = j / Rate / stretch * Rate; // position on the source grid
+                int i = Math.Min((int)Math.Floor(u), n - 2);
+                double a = u - i;
+                if (a > 1) a = 1;
+                var imu = new ImuSample(t0 + j / Rate,
+                    acc[0][i] + a * (acc[0][i + 1] - acc[0][i]),
+                    acc[1][i] + a * (acc[1][i + 1] - acc[1][i]),
+                    acc[2][i] + a * (acc[2][i + 1] - acc[2][i]));
+                var label = rows[a < 1 ? i : i + 1];
+                output.Add(label.HasTruth ? new RecordedSample(imu, label.Left, label.Right) : new RecordedSample(imu));
+            }
+            var result = new Recording(name, output);
+            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
+            return result;
+        }
+
+        /// <summary>The recording on an exact 100 Hz grid: linear interpolation of the acceleration, labels held from the last row.</summary>
+        public static List<RecordedSample> Uniform(Recording source)
+        {
+            var rows = new List<RecordedSample>();
+            foreach (var r in source.Samples)
+            {
+                if (!r.Imu.IsFinite || rows.Count > 0 && !(r.Imu.Time > rows[rows.Count - 1].Imu.Time)) continue;
+                rows.Add(r);
+            }
+            var grid = new List<RecordedSample>();
+            if (rows.Count < 2) return grid;
+            double t0 = rows[0].Imu.Time, t1 = rows[rows.Count - 1].Imu.Time;
+            int j = 0;
+            for (int k = 0; t0 + k / Rate <= t1 + 1e-9; k++)
+            {
+                double t = t0 + k / Rate;
+                while (j + 2 < rows.Count && rows[j + 1].Imu.Time <= t) j++;
+                var p = rows[j];
+                var q = rows[j + 1];
+                double a = (t - p.Imu.Time) / (q.Imu.Time - p.Imu.Time);
+                if (a < 0) a = 0;
+                if (a > 1) a = 1;
+                var imu = new ImuSample(t, p.Imu.X + a * (q.Imu.X - p.Imu.X), p.Imu.Y + a * (q.Imu.Y - p.Imu.Y), p.Imu.Z + a * (q.Imu.Z - p.Imu.Z));
+                var label = a >= 1 ? q : p;
+                grid.Add(label.HasTruth ? new RecordedSample(imu, label.Left, label.Right) : new RecordedSample(imu));
+            }
+            return grid;
+        }
+
+        static double[] MovingAverage(double[] v, int half)
+        {
+            int n = v.Length;
+            var prefix = new double[n + 1];
+            for (int i = 0; i < n; i++) prefix[i + 1] = prefix[i] + v[i];
+            var r = new double[n];
+            for (int i = 0; i < n; i++)
+            {
+                int a = Math.Max(0, i - half), b = Math.Min(n - 1, i + half);
+                r[i] = (prefix[b + 1] - prefix[a]) / (b - a + 1);
+            }
+            return r;
+        }
+    }
+}
