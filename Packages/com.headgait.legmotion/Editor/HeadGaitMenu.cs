@@ -13,13 +13,15 @@ namespace HeadGait.Editor
         {
             string csv = EditorUtility.OpenFilePanel("Recording to evaluate (CSV with phase_left/phase_right)", Application.dataPath, "csv");
             if (string.IsNullOrEmpty(csv)) return;
-            string tpl = EditorUtility.OpenFilePanel("COR template (cancel for THR only)", Path.GetDirectoryName(csv), "txt");
+            string tpl = EditorUtility.OpenFolderPanel("Model folder (thr.txt, cor_template.txt, svm.bytes, blstm.bytes)", Path.GetDirectoryName(csv), "");
+            if (string.IsNullOrEmpty(tpl)) return;
             try
             {
                 var rec = RecordingCsv.Load(csv);
                 var report = new StringBuilder($"HeadGait evaluation of {rec.Name} ({rec.Samples.Count} rows, {rec.Warnings.Count} skipped)\n");
-                Append(report, ReplayEvaluator.Run(rec, new ThresholdClassifier()));
-                if (!string.IsNullOrEmpty(tpl)) Append(report, ReplayEvaluator.Run(rec, new CorrelationClassifier(CorrelationTemplate.Load(tpl))));
+                var models = GaitModels.Load(tpl);
+                foreach (var problem in models.Problems) report.AppendLine("warning: " + problem);
+                foreach (var name in GaitModels.Names) Append(report, ReplayEvaluator.Run(rec, models.Create(name, out _)));
                 Debug.Log(report.ToString());
             }
             catch (System.Exception e) when (e is RecordingFormatException || e is IOException || e is System.FormatException)
@@ -28,20 +30,24 @@ namespace HeadGait.Editor
             }
         }
 
-        [MenuItem("Tools/HeadGait/Train COR Template...")]
+        [MenuItem("Tools/HeadGait/Train THR and COR...")]
         static void Train()
         {
             string folder = EditorUtility.OpenFolderPanel("Folder of labelled recordings (CSV)", Application.dataPath, "");
             if (string.IsNullOrEmpty(folder)) return;
-            string output = EditorUtility.SaveFilePanel("Save COR template", Application.dataPath, "cor_template", "txt");
+            string output = EditorUtility.OpenFolderPanel("Model folder to write thr.txt and cor_template.txt into", Application.dataPath, "");
             if (string.IsNullOrEmpty(output)) return;
             try
             {
                 var recordings = new System.Collections.Generic.List<Recording>();
                 foreach (var f in Directory.GetFiles(folder, "*.csv")) recordings.Add(RecordingCsv.Load(f));
-                var template = CorrelationTemplate.Train(recordings);
-                template.Save(output);
-                Debug.Log($"HeadGait: wrote {output} from {template.StepsUsed} steps and {template.StridesUsed} strides.");
+                var training = HeadGait.Training.GaitTraining.WithAugmentation(recordings, HeadGait.Training.GaitTraining.DefaultAugmentedCopies);
+                var map = HeadGait.Training.PhaseMapTraining.Learn(recordings);
+                var gate = HeadGait.Training.GaitTraining.TrainGate(training);
+                HeadGait.Training.GaitTraining.TrainThreshold(training, map, gate).Save(Path.Combine(output, GaitModels.ThresholdFile));
+                var template = HeadGait.Training.GaitTraining.TrainCorrelation(training, map, gate);
+                template.Save(Path.Combine(output, GaitModels.CorrelationFile));
+                Debug.Log($"HeadGait: wrote THR and COR into {output} from {recordings.Count} recordings ({template.StepsUsed} steps). SVM and BLSTM train with `headgait train` (Python).");
                 AssetDatabase.Refresh();
             }
             catch (System.Exception e) when (e is RecordingFormatException || e is IOException || e is System.InvalidOperationException)

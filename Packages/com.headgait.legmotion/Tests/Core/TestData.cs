@@ -10,6 +10,9 @@ namespace HeadGait.Tests
     {
         static readonly Dictionary<string, Recording> Cache = new Dictionary<string, Recording>();
         static CorrelationTemplate template;
+        static ThresholdSettings threshold;
+        static WalkingGate gate;
+        static PhaseMap map;
         static List<Recording> training;
 
         public static string Folder
@@ -60,14 +63,24 @@ namespace HeadGait.Tests
             return list;
         }
 
-        public static CorrelationTemplate Template
-        {
-            get
-            {
-                if (template == null) template = CorrelationTemplate.Train(Training);
-                return template;
-            }
-        }
+        /// <summary>The phase map learned from the generated training recordings.</summary>
+        public static PhaseMap Map => map ?? (map = global::HeadGait.Training.PhaseMapTraining.Learn(TrainingSet));
+
+        public static WalkingGate Gate => gate ?? (gate = global::HeadGait.Training.GaitTraining.TrainGate(TrainingSet));
+
+        /// <summary>COR trained as `headgait train` does, on the generated training recordings.</summary>
+        public static CorrelationTemplate Template => template ?? (template = global::HeadGait.Training.GaitTraining.TrainCorrelation(TrainingSet, Map, Gate));
+
+        /// <summary>THR trained as `headgait train` does, on the generated training recordings.</summary>
+        public static ThresholdSettings Threshold => threshold ?? (threshold = global::HeadGait.Training.GaitTraining.TrainThreshold(TrainingSet, Map, Gate));
+
+        /// <summary>
+        /// The generated training recordings with augmented copies, as `headgait train` makes them; eight per recording
+        /// rather than two, because three recordings with two copies each would sample the amplitude range too thinly.
+        /// </summary>
+        static List<Recording> TrainingSet => augmented ?? (augmented = global::HeadGait.Training.GaitTraining.WithAugmentation(Training, 8));
+
+        static List<Recording> augmented;
 
         public static ImuSample Still(double t) => new ImuSample(t, 0, 0, 9.80665);
 

@@ -36,6 +36,10 @@ namespace HeadGait
             return new GaitPrediction(time, true, s, stepPeriod, confidence, map.PhaseAt(Foot.Left, s), map.PhaseAt(Foot.Right, s));
         }
 
+        /// <summary>Walking with the feet's phases given by the classifier (they must agree with the stride position under its map).</summary>
+        public static GaitPrediction Walking(double time, double stridePosition, double stepPeriod, double confidence, GaitPhase left, GaitPhase right)
+            => new GaitPrediction(time, true, PhaseMap.Wrap(stridePosition), stepPeriod, confidence, left, right);
+
         public GaitPhase PhaseOf(Foot foot) => foot == Foot.Left ? Left : Right;
 
         public override string ToString()
@@ -49,6 +53,10 @@ namespace HeadGait
     {
         string Name { get; }
         PhaseMap PhaseMap { get; }
+
+        /// <summary>Grid samples each window must hold (the newest ones are read).</summary>
+        int WindowLength { get; }
+
         GaitPrediction Classify(SignalWindow window);
         void Reset();
     }

@@ -1,68 +1,152 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Text;
 
 namespace HeadGait
 {
+    /// <summary>THR's learned and chosen values; saved as a small text file (<c># headgait-thr v1</c>).</summary>
     public sealed class ThresholdSettings
     {
-        /// <summary>SMV-minus-gravity level (m/s^2) whose upward crossing is taken as an initial contact.</summary>
-        public double Threshold = 1.2;
+        public const string Magic = "# headgait-thr v1";
 
-        /// <summary>The detector re-arms once SMV falls below Threshold * RearmFraction.</summary>
+        /// <summary>SMV minus gravity (m/s^2) that an initial contact's rise must cross at least, however calm the walker.</summary>
+        public double Floor = 0.8;
+
+        /// <summary>
+        /// The threshold also follows the walker: this fraction of the recent step peaks. A fixed level learned from bouncy
+        /// training walkers would never be crossed by calm ones.
+        /// </summary>
+        public double PeakFraction = 0.45;
+
+        /// <summary>The detector re-arms once SMV falls below the threshold times this.</summary>
         public double RearmFraction = 0.3;
 
-        /// <summary>Crossings closer than this to the previous step are ignored (seconds).</summary>
-        public double MinStepInterval = 0.3;
+        /// <summary>Mean time from a true initial contact to the crossing that detects it (s); subtracted.</summary>
+        public double ContactLag = 0.0;
 
-        /// <summary>Steps further apart than this are not used to update the step period (seconds).</summary>
-        public double MaxStepInterval = 1.0;
+        /// <summary>
+        /// Mean lateral acceleration over the 0.5 s up to a left contact's detection (centred; right contacts mirrored in).
+        /// Its correlation with the window's lateral acceleration says which foot landed. A learned curve, not a sign rule:
+        /// where in the sway a crossing falls moves with style and threshold, and a single sign flips with it.
+        /// </summary>
+        public double[] LateralProfile = DefaultLateralProfile();
 
-        /// <summary>Step period assumed before two steps have been seen (seconds).</summary>
-        public double InitialStepPeriod = 0.55;
+        public const int ProfileSamples = 50;
 
-        /// <summary>Standing is reported once no step was detected for this many step periods.</summary>
-        public double StandingAfterPeriods = 1.6;
+        /// <summary>Until trained: the body sways towards the foot about to land, so lateral acceleration turns towards it.</summary>
+        static double[] DefaultLateralProfile()
+        {
+            var p = new double[ProfileSamples];
+            for (int i = 0; i < p.Length; i++) p[i] = Math.Sin(Math.PI * (i + 1.0) / ProfileSamples - Math.PI / 2);
+            return p;
+        }
 
-        /// <summary>Samples of lateral acceleration before the crossing that decide the side.</summary>
-        public int SideSamples = 25;
+        public PhaseMap PhaseMap = PhaseMap.Perry;
 
-        /// <summary>+1: positive mean lateral acceleration before the crossing means a left initial contact; -1: the opposite.</summary>
-        public int LeftLateralSign = +1;
+        /// <summary>Crossings count only while the head moves like walking (learned; open by default).</summary>
+        public WalkingGate Gate = WalkingGate.Open;
+
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 2 };
+
+        public ThresholdSettings Clone()
+        {
+            var c = (ThresholdSettings)MemberwiseClone();
+            c.Clock = Clock.Clone();
+            return c;
+        }
+
+        public string Serialize()
+        {
+            var ci = CultureInfo.InvariantCulture;
+            return KeyValueText.Write(Magic, new[]
+            {
+                new KeyValuePair<string, string>("phase_map", PhaseMap.Serialize()),
+                new KeyValuePair<string, string>("floor", Floor.ToString("R", ci)),
+                new KeyValuePair<string, string>("peak_fraction", PeakFraction.ToString("R", ci)),
+                new KeyValuePair<string, string>("rearm_fraction", RearmFraction.ToString("R", ci)),
+                new KeyValuePair<string, string>("contact_lag", ContactLag.ToString("R", ci)),
+                new KeyValuePair<string, string>("lateral_profile", Join(LateralProfile)),
+                new KeyValuePair<string, string>("contacts_to_start", Clock.ContactsToStart.ToString(ci)),
+                new KeyValuePair<string, string>("walking_gate", Gate.Serialize()),
+            });
+        }
+
+        static string Join(double[] v)
+        {
+            var sb = new StringBuilder();
+            for (int i = 0; i < v.Length; i++) sb.Append(i > 0 ? "," : "").Append(v[i].ToString("G9", CultureInfo.InvariantCulture));
+            return sb.ToString();
+        }
+
+        public void Save(string path) => File.WriteAllText(path, Serialize(), new UTF8Encoding(false));
+
+        public static ThresholdSettings Load(string path) => Parse(File.ReadAllText(path, Encoding.UTF8), path);
+
+        public static ThresholdSettings Parse(string text, string source = "THR settings")
+        {
+            var kv = KeyValueText.Parse(text, Magic, source);
+            var s = new ThresholdSettings
+            {
+                PhaseMap = kv.PhaseMap("phase_map"),
+                Floor = kv.Number("floor", 0.01, 50),
+                PeakFraction = kv.Number("peak_fraction", 0, 1),
+                RearmFraction = kv.Number("rearm_fraction", 0, 1),
+                ContactLag = kv.Number("contact_lag", -0.45, 0.45),
+                LateralProfile = kv.Numbers("lateral_profile", ProfileSamples, -1e3, 1e3),
+            };
+            s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
+            if (kv.Has("walking_gate")) s.Gate = new WalkingGate(kv.Numbers("walking_gate", WalkingGate.FeatureCount + 1, -1e4, 1e4));
+            return s;
+        }
     }
 
     /// <summary>
-    /// THR: an initial contact is detected when SMV minus gravity rises above a threshold; the side comes
-    /// from the sign of the lateral (acc_y) acceleration just before it. Between detections the stride
-    /// position advances at the measured step rate; no step for a while means standing.
+    /// THR: an initial contact is detected when SMV minus gravity rises through a threshold (the larger of a floor and a
+    /// fraction of the recent step peaks), dated back by the learned detection lag; the side comes from the lateral
+    /// acceleration just before it, relative to the window's mean. A <see cref="StepClock"/> turns the contacts into a
+    /// stride position; two contacts at step-like intervals start walking. Allocation-free per window.
     /// </summary>
     public sealed class ThresholdClassifier : IGaitClassifier
     {
         readonly ThresholdSettings settings;
+        readonly StepClock clock;
         bool armed = true;
-        bool walking;
-        double lastStepTime = double.NegativeInfinity;
-        Foot lastFoot;
-        double stepPeriod;
         double lastSmv;
+        double peakLevel;      // smoothed peak of recent steps
+        double currentPeak;    // peak of the step being crossed
+        bool inStep;
+        int stillWindows;
 
-        public ThresholdClassifier(ThresholdSettings settings = null, PhaseMap phaseMap = null)
+        public ThresholdClassifier(ThresholdSettings settings = null)
         {
             this.settings = settings ?? new ThresholdSettings();
-            PhaseMap = phaseMap ?? PhaseMap.Perry;
+            clock = new StepClock(this.settings.PhaseMap, this.settings.Clock);
             Reset();
         }
 
         public string Name => "THR";
-        public PhaseMap PhaseMap { get; }
+        public int WindowLength => 50;
+        public PhaseMap PhaseMap => settings.PhaseMap;
         public ThresholdSettings Settings => settings;
+        public StepClock Clock => clock;
+
+        /// <summary>Threshold in force after the last window (diagnostics).</summary>
+        public double Threshold => Math.Max(settings.Floor, settings.PeakFraction * peakLevel);
+
+        /// <summary>Raised for every contact the clock takes: its time (lag-corrected) and the evidence that it is the left foot's.</summary>
+        public event Action<double, double> ContactDetected;
 
         public void Reset()
         {
+            clock.Reset();
             armed = true;
-            walking = false;
-            lastStepTime = double.NegativeInfinity;
-            stepPeriod = settings.InitialStepPeriod;
             lastSmv = 0;
+            peakLevel = 0;
+            currentPeak = 0;
+            inStep = false;
+            stillWindows = 0;
         }
 
         public GaitPrediction Classify(SignalWindow window)
@@ -70,69 +154,138 @@ namespace HeadGait
             int n = window.Length;
             double now = window.EndTime;
             double smv = window.Smv[n - 1];
-            if (!armed && smv < settings.Threshold * settings.RearmFraction) armed = true;
-
-            bool crossed = armed && smv >= settings.Threshold && lastSmv < settings.Threshold;
+            // Standing for a while: forget the walker's peaks, so the floor alone decides the next start.
+            if (!clock.IsWalking(now) && now - clock.LastContactTime > 2.0) peakLevel = 0;
+            double threshold = Threshold;
+            if (inStep) currentPeak = Math.Max(currentPeak, smv);
+            if (!armed && smv < threshold * settings.RearmFraction)
+            {
+                armed = true;
+                if (inStep)
+                {
+                    peakLevel = peakLevel <= 0 ? currentPeak : 0.7 * peakLevel + 0.3 * currentPeak;
+                    inStep = false;
+                }
+            }
+            bool moving = settings.Gate.Passes(window);
+            stillWindows = moving ? 0 : stillWindows + 1;
+            if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
+            bool crossed = armed && smv >= threshold && lastSmv < threshold && moving;
             lastSmv = smv;
-            if (crossed && now - lastStepTime >= settings.MinStepInterval)
+            if (crossed)
             {
                 armed = false;
-                int m = Math.Min(settings.SideSamples, n);
-                double mean = 0;
-                for (int i = n - m; i < n; i++) mean += window.Lateral[i];
-                mean /= m;
-                // Remove the window's lateral offset (head tilt leaks gravity into acc_y).
-                double offset = 0;
-                for (int i = 0; i < n; i++) offset += window.Lateral[i];
-                offset /= n;
-                Foot foot = (mean - offset) * settings.LeftLateralSign >= 0 ? Foot.Left : Foot.Right;
-                double interval = now - lastStepTime;
-                if (walking && interval <= settings.MaxStepInterval)
+                double evidence = SideEvidence(window);
+                double time = now - settings.ContactLag;
+                if (clock.Contact(time, evidence))
                 {
-                    stepPeriod = 0.7 * stepPeriod + 0.3 * interval;
+                    inStep = true;
+                    currentPeak = smv;
+                    ContactDetected?.Invoke(time, evidence);
                 }
-                walking = true;
-                lastStepTime = now;
-                lastFoot = foot;
             }
+            double confidence = clock.IsWalking(now) ? Math.Max(0, 1 - (now - clock.LastContactTime) / (settings.Clock.StandingAfterPeriods * clock.StepPeriod)) : 0;
+            return clock.Predict(now, confidence);
+        }
 
-            if (walking && now - lastStepTime > settings.StandingAfterPeriods * stepPeriod) walking = false;
-            if (!walking) return GaitPrediction.Standing(now);
-
-            double since = now - lastStepTime;
-            double s = PhaseMap.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + since / (2 * stepPeriod);
-            double confidence = Math.Max(0, 1 - since / (settings.StandingAfterPeriods * stepPeriod));
-            return GaitPrediction.Walking(now, s, stepPeriod, confidence, PhaseMap);
+        /// <summary>Pearson r of the newest 0.5 s of lateral acceleration with the left-contact profile (its mean removes head tilt).</summary>
+        double SideEvidence(SignalWindow window)
+        {
+            var p = settings.LateralProfile;
+            int m = Math.Min(p.Length, Math.Min(window.Count, window.Length));
+            int first = window.Length - m, pf = p.Length - m;
+            double lm = 0, pm = 0;
+            for (int i = 0; i < m; i++)
+            {
+                lm += window.Lateral[first + i];
+                pm += p[pf + i];
+            }
+            lm /= m;
+            pm /= m;
+            double dot = 0, ll = 0, pp = 0;
+            for (int i = 0; i < m; i++)
+            {
+                double a = window.Lateral[first + i] - lm, b = p[pf + i] - pm;
+                dot += a * b;
+                ll += a * a;
+                pp += b * b;
+            }
+            return ll > 0 && pp > 0 ? dot / Math.Sqrt(ll * pp) : 0;
         }
 
         /// <summary>
-        /// Sets the threshold to a fraction of the median per-step SMV peak in labelled recordings and
-        /// picks the lateral sign that names the feet right most often. Returns the settings it chose.
+        /// Learns THR from labelled recordings: the floor from the quietest steps' peaks, the lateral sign that names the
+        /// feet right most often, and the detection lag (median time from a true contact to the crossing that detects it).
         /// </summary>
-        public static ThresholdSettings Calibrate(IEnumerable<Recording> training, double peakFraction = 0.6)
+        public static ThresholdSettings Calibrate(IEnumerable<Recording> training, PhaseMap map, WalkingGate gate, ThresholdSettings start = null)
         {
+            var s = (start ?? new ThresholdSettings()).Clone();
+            s.PhaseMap = map ?? s.PhaseMap;
+            s.Gate = gate ?? s.Gate;
             var peaks = new List<double>();
-            int agree = 0, disagree = 0;
-            var s = new ThresholdSettings();
-            foreach (var rec in training)
+            var list = new List<Recording>(training);
+            foreach (var rec in list)
             {
                 var raw = new RawSignal(rec);
                 foreach (var step in PhaseEvents.TruthSteps(rec))
                 {
                     double peak = double.NegativeInfinity;
-                    for (int k = 0; k < 50; k++) peak = Math.Max(peak, raw.Smv(step.Start + step.Duration * k / 50.0));
+                    for (int k = 0; k <= 30; k++) peak = Math.Max(peak, raw.Smv(step.Start + 0.01 * k));
                     peaks.Add(peak);
-                    double before = 0, around = 0;
-                    for (int k = 0; k < s.SideSamples; k++) before += raw.Lateral(step.Start + 0.05 - k * 0.01);
-                    for (int k = 0; k < 50; k++) around += raw.Lateral(step.Start + 0.05 - k * 0.01);
-                    double sign = before / s.SideSamples - around / 50;
-                    if ((sign >= 0) == (step.Foot == Foot.Left)) agree++; else disagree++;
                 }
             }
-            if (peaks.Count == 0) return s;
+            if (peaks.Count < 8) return s;
             peaks.Sort();
-            s.Threshold = peakFraction * peaks[peaks.Count / 2];
-            s.LeftLateralSign = agree >= disagree ? +1 : -1;
+            // Half the peak of the quietest 2 % of (augmented) steps: calm walkers cross it; the gate and the second contact keep gestures out.
+            s.Floor = Math.Max(0.3, 0.5 * peaks[(int)(0.02 * (peaks.Count - 1))]);
+            // Lag from a replay with the learned floor; then the lateral profile around true contacts, shifted by that lag.
+            var lags = new List<double>();
+            var probe = s.Clone();
+            probe.ContactLag = 0;
+            foreach (var rec in list)
+            {
+                var thr = new ThresholdClassifier(probe);
+                var detections = new List<double>();
+                thr.ContactDetected += (t, e) => detections.Add(t);
+                var pre = new StreamPreprocessor();
+                foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
+                PhaseEvents.ExtractTruth(rec, out var times, out var left, out var right);
+                var contacts = PhaseEvents.Contacts(times, left, right);
+                foreach (var d in detections)
+                {
+                    double nearest = double.PositiveInfinity;
+                    foreach (var c in contacts)
+                        if (Math.Abs(d - c.Time) < Math.Abs(nearest)) nearest = d - c.Time;
+                    if (Math.Abs(nearest) <= 0.2) lags.Add(nearest);
+                }
+            }
+            if (lags.Count >= 8)
+            {
+                lags.Sort();
+                s.ContactLag = Math.Max(-0.45, Math.Min(0.45, lags[lags.Count / 2]));
+            }
+            var profile = new double[ThresholdSettings.ProfileSamples];
+            var segment = new double[profile.Length];
+            int used = 0;
+            foreach (var rec in list)
+            {
+                var raw = new RawSignal(rec);
+                PhaseEvents.ExtractTruth(rec, out var times, out var left, out var right);
+                foreach (var c in PhaseEvents.Contacts(times, left, right))
+                {
+                    double end = c.Time + s.ContactLag, mean = 0;
+                    for (int i = 0; i < segment.Length; i++) mean += segment[i] = raw.Lateral(end - (segment.Length - 1 - i) * 0.01);
+                    mean /= segment.Length;
+                    double sign = c.Foot == Foot.Left ? 1 : -1;
+                    for (int i = 0; i < segment.Length; i++) profile[i] += sign * (segment[i] - mean);
+                    used++;
+                }
+            }
+            if (used >= 8)
+            {
+                for (int i = 0; i < profile.Length; i++) profile[i] /= used;
+                s.LateralProfile = profile;
+            }
             return s;
         }
     }

@@ -33,7 +33,30 @@ namespace HeadGait
             RightOffset = rightOffset;
         }
 
-        public static PhaseMap Perry { get; } = new PhaseMap(new[] { 0.0, 0.02, 0.12, 0.31, 0.50, 0.62, 0.75, 0.87 });
+        /// <summary>Perry's phase onsets as fractions of the gait cycle; stance (IC to toe-off) is the first 62 %.</summary>
+        static readonly double[] PerryOnsets = { 0.0, 0.02, 0.12, 0.31, 0.50, 0.62, 0.75, 0.87 };
+        public const double PerryStance = 0.62;
+
+        public static PhaseMap Perry { get; } = new PhaseMap(PerryOnsets);
+
+        /// <summary>
+        /// Perry's phases with stance rescaled to <paramref name="stanceFraction"/> of the cycle and swing to the rest, which
+        /// is how per-foot labels are made from measured contacts (IC to toe-off split 0-2-12-31-50-62 %, swing 62-75-87-100 %).
+        /// </summary>
+        public static PhaseMap FromStanceFraction(double stanceFraction, double rightOffset = 0.5)
+        {
+            if (!(stanceFraction > 0.2 && stanceFraction < 0.9)) throw new ArgumentException("Stance must be between 20 % and 90 % of the cycle.", nameof(stanceFraction));
+            var onsets = new double[PerryOnsets.Length];
+            for (int p = 0; p < onsets.Length; p++)
+            {
+                double u = PerryOnsets[p];
+                onsets[p] = u < PerryStance ? u / PerryStance * stanceFraction : stanceFraction + (u - PerryStance) / (1 - PerryStance) * (1 - stanceFraction);
+            }
+            return new PhaseMap(onsets, rightOffset);
+        }
+
+        /// <summary>The phase a foot is in at a fraction of its own cycle under Perry's onsets (0 = its initial contact).</summary>
+        public static GaitPhase PerryPhaseAt(double cycleFraction) => Perry.PhaseAt(Foot.Left, cycleFraction);
 
         /// <summary>Onset of a phase as a fraction of that foot's own cycle.</summary>
         public double Onset(GaitPhase phase)

@@ -18,7 +18,14 @@ namespace HeadGait
         public GaitPipeline(IGaitClassifier classifier, PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null)
         {
             this.classifier = classifier ?? throw new ArgumentNullException(nameof(classifier));
-            preprocessor = new StreamPreprocessor(preprocessorSettings ?? new PreprocessorSettings());
+            var settings = preprocessorSettings ?? new PreprocessorSettings();
+            if (settings.History < classifier.WindowLength)
+            {
+                // The classifier reads more history than the settings keep: carry it in every window.
+                settings = settings.Clone();
+                settings.History = classifier.WindowLength;
+            }
+            preprocessor = new StreamPreprocessor(settings);
             animator = new GaitAnimatorStateMachine(classifier.PhaseMap, animatorSettings);
             onWindow = OnWindow;
             Latest = new AnimatorFrame(0, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);

@@ -9,9 +9,15 @@ namespace HeadGait
     {
         public const string PackageFolder = "Packages/com.headgait.legmotion";
         public const string RecordingsFolder = PackageFolder + "/Samples~/Recordings";
+        public const string ModelsFolder = PackageFolder + "/Models";
 
         /// <summary>The Samples~/Recordings folder, searched upwards from each start directory; null when not found.</summary>
-        public static string FindRecordingsFolder(params string[] startDirectories)
+        public static string FindRecordingsFolder(params string[] startDirectories) => FindAbove(RecordingsFolder, startDirectories);
+
+        /// <summary>The package's trained models (Models/), searched like <see cref="FindRecordingsFolder"/>; null when not found.</summary>
+        public static string FindModelsFolder(params string[] startDirectories) => FindAbove(ModelsFolder, startDirectories);
+
+        static string FindAbove(string relative, string[] startDirectories)
         {
             var starts = new List<string>(startDirectories ?? Array.Empty<string>());
             starts.Add(Directory.GetCurrentDirectory());
@@ -22,7 +28,7 @@ namespace HeadGait
                 var dir = new DirectoryInfo(start);
                 while (dir != null)
                 {
-                    string candidate = Path.Combine(dir.FullName, RecordingsFolder);
+                    string candidate = Path.Combine(dir.FullName, relative);
                     if (Directory.Exists(candidate)) return candidate;
                     dir = dir.Parent;
                 }

@@ -1,8 +1,8 @@
 namespace HeadGait
 {
     /// <summary>
-    /// The latest <see cref="Length"/> resampled samples, oldest first: SMV minus gravity and the
-    /// lateral (head y) acceleration. The preprocessor reuses one instance: copy what you keep.
+    /// The latest <see cref="Length"/> resampled samples, oldest first: SMV minus gravity and the head-frame
+    /// lateral (y), forward (x) and vertical (z) acceleration. The preprocessor reuses one instance: copy what you keep.
     /// </summary>
     public sealed class SignalWindow
     {
@@ -10,7 +10,10 @@ namespace HeadGait
         {
             Smv = new double[length];
             Lateral = new double[length];
+            Forward = new double[length];
+            Vertical = new double[length];
             SampleRate = sampleRate;
+            Count = length;
         }
 
         /// <summary>Signal magnitude vector minus gravity, m/s^2, oldest first.</summary>
@@ -19,7 +22,19 @@ namespace HeadGait
         /// <summary>Lateral (head y, left positive) acceleration, m/s^2, oldest first.</summary>
         public double[] Lateral { get; }
 
+        /// <summary>Forward (head x) acceleration, m/s^2, oldest first.</summary>
+        public double[] Forward { get; }
+
+        /// <summary>Vertical (head z, up positive) specific force, m/s^2, oldest first.</summary>
+        public double[] Vertical { get; }
+
         public int Length => Smv.Length;
+
+        /// <summary>
+        /// Valid samples at the end of the window. Below <see cref="Length"/> only while a stream (re)starts and the window
+        /// carries more history than the preprocessor's window length; the older slots are then zeros.
+        /// </summary>
+        public int Count { get; internal set; }
 
         public double SampleRate { get; }
 
@@ -31,9 +46,11 @@ namespace HeadGait
 
         public SignalWindow Clone()
         {
-            var w = new SignalWindow(Length, SampleRate) { EndTime = EndTime, EndIndex = EndIndex };
+            var w = new SignalWindow(Length, SampleRate) { EndTime = EndTime, EndIndex = EndIndex, Count = Count };
             System.Array.Copy(Smv, w.Smv, Length);
             System.Array.Copy(Lateral, w.Lateral, Length);
+            System.Array.Copy(Forward, w.Forward, Length);
+            System.Array.Copy(Vertical, w.Vertical, Length);
             return w;
         }
     }

@@ -7,8 +7,14 @@ namespace HeadGait
         /// <summary>Rate of the resampled grid the classifiers work on (Hz).</summary>
         public double SampleRate = 100.0;
 
-        /// <summary>Samples per window (50 at 100 Hz = 0.5 s).</summary>
+        /// <summary>Samples per window (50 at 100 Hz = 0.5 s): the first window comes once this many are in.</summary>
         public int WindowLength = 50;
+
+        /// <summary>
+        /// Samples of history each window carries (at least <see cref="WindowLength"/>); a classifier that looks further
+        /// back than the window (COR's slowest steps) reads <see cref="SignalWindow.Count"/> valid ones.
+        /// </summary>
+        public int History = 50;
 
         /// <summary>Standard gravity subtracted from the signal magnitude vector (m/s^2).</summary>
         public double Gravity = 9.80665;
@@ -22,10 +28,13 @@ namespace HeadGait
         /// <summary>Input samples whose magnitude exceeds this (m/s^2) are treated as corrupt and skipped.</summary>
         public double MaxMagnitude = 200.0;
 
+        public PreprocessorSettings Clone() => (PreprocessorSettings)MemberwiseClone();
+
         public void Validate()
         {
             if (!(SampleRate > 0) || double.IsInfinity(SampleRate)) throw new ArgumentException("SampleRate must be positive.");
             if (WindowLength < 2) throw new ArgumentException("WindowLength must be at least 2.");
+            if (History > 100000) throw new ArgumentException("History must be at most 100000 samples.");
             if (!(MaxGap > 0)) throw new ArgumentException("MaxGap must be positive.");
             if (!(Gravity >= 0)) throw new ArgumentException("Gravity must not be negative.");
         }
@@ -55,6 +64,8 @@ namespace HeadGait
         readonly PreprocessorSettings settings;
         readonly double[] smvRing;
         readonly double[] latRing;
+        readonly double[] fwdRing;
+        readonly double[] vertRing;
         readonly SignalWindow window;
         readonly double dt;
 
@@ -72,9 +83,12 @@ namespace HeadGait
         {
             this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
             settings.Validate();
-            smvRing = new double[settings.WindowLength];
-            latRing = new double[settings.WindowLength];
-            window = new SignalWindow(settings.WindowLength, settings.SampleRate);
+            int capacity = Math.Max(settings.WindowLength, settings.History);
+            smvRing = new double[capacity];
+            latRing = new double[capacity];
+            fwdRing = new double[capacity];
+            vertRing = new double[capacity];
+            window = new SignalWindow(capacity, settings.SampleRate);
             dt = 1.0 / settings.SampleRate;
         }
 
@@ -151,8 +165,8 @@ namespace HeadGait
                 if (a < 0) a = 0;
                 if (a > 1) a = 1;
                 double s = previousSmv + a * (smv - previousSmv);
-                double lat = previous.Y + a * (sample.Y - previous.Y);
-                Emit(t, s, lat, onWindow);
+                Emit(t, s, previous.X + a * (sample.X - previous.X), previous.Y + a * (sample.Y - previous.Y),
+                    previous.Z + a * (sample.Z - previous.Z), onWindow);
             }
             previous = sample;
             previousSmv = smv;
@@ -168,20 +182,22 @@ namespace HeadGait
             filled = 0;
             gridOrigin = sample.Time;
             gridIndex = 0;
-            Emit(sample.Time, smv, sample.Y, onWindow);
+            Emit(sample.Time, smv, sample.X, sample.Y, sample.Z, onWindow);
         }
 
-        void Emit(double t, double smv, double lateral, Action<SignalWindow> onWindow)
+        void Emit(double t, double smv, double forward, double lateral, double vertical, Action<SignalWindow> onWindow)
         {
             int n = smvRing.Length;
             int slot = (int)(filled % n);
             smvRing[slot] = smv;
             latRing[slot] = lateral;
+            fwdRing[slot] = forward;
+            vertRing[slot] = vertical;
             filled++;
             gridIndex++;
             produced++;
-            if (filled < n) return;
-            // Unroll the ring oldest-first into the window.
+            if (filled < settings.WindowLength) return;
+            // Unroll the ring oldest-first into the window (slots not yet filled after a restart are zeros).
             int start = (int)(filled % n);
             for (int i = 0; i < n; i++)
             {
@@ -189,9 +205,13 @@ namespace HeadGait
                 if (k >= n) k -= n;
                 window.Smv[i] = smvRing[k];
                 window.Lateral[i] = latRing[k];
+                window.Forward[i] = fwdRing[k];
+                window.Vertical[i] = vertRing[k];
             }
+            for (int i = 0; i < n - filled; i++) window.Smv[i] = window.Lateral[i] = window.Forward[i] = window.Vertical[i] = 0;
             window.EndTime = t;
             window.EndIndex = filled - 1;
+            window.Count = (int)Math.Min(filled, n);
             onWindow?.Invoke(window);
         }
     }

@@ -40,21 +40,7 @@ namespace HeadGait.Synthetic
         public double NoiseStd = 0.05;
 
         /// <summary>The subject's true phase map: Perry's onsets with stance stretched to <see cref="StanceFraction"/>.</summary>
-        public PhaseMap PhaseMap
-        {
-            get
-            {
-                var perry = new[] { 0.0, 0.02, 0.12, 0.31, 0.50, 0.62, 0.75, 0.87 };
-                var o = new double[8];
-                for (int i = 0; i < 8; i++)
-                {
-                    o[i] = perry[i] <= 0.62
-                        ? perry[i] * StanceFraction / 0.62
-                        : StanceFraction + (perry[i] - 0.62) * (1 - StanceFraction) / 0.38;
-                }
-                return new PhaseMap(o, 0.5);
-            }
-        }
+        public PhaseMap PhaseMap => PhaseMap.FromStanceFraction(StanceFraction);
 
         /// <summary>A plausible adult, drawn from the seed.</summary>
         public static GaitSubject Random(ulong seed, string name = null)

@@ -23,6 +23,12 @@ namespace HeadGait.Training
         public double MinLateralScale = 0.4, MaxLateralScale = 1.1;
         public double MinForwardScale = 0.5, MaxForwardScale = 1.1;
 
+        /// <summary>
+        /// Overall gain of the dynamic part, drawn log-uniformly: the actors' head bounce spans a factor of seven between
+        /// styles (SMV spread 0.8 to 5.7 m/s^2), and calm walkers must not fall outside what the classifiers saw.
+        /// </summary>
+        public double MinGain = 0.5, MaxGain = 1.5;
+
         /// <summary>Seconds of the moving average that separates the slow part (gravity through head tilt) from the dynamic part.</summary>
         public double SlowWindowSeconds = 1.0;
     }
@@ -42,13 +48,14 @@ namespace HeadGait.Training
             double exponent = random.Uniform(s.MinAmplitudeExponent, s.MaxAmplitudeExponent);
             double forward = random.Uniform(s.MinForwardScale, s.MaxForwardScale);
             double lateral = random.Uniform(s.MinLateralScale, s.MaxLateralScale);
-            return Transform(source, stretch, Math.Pow(stretch, -exponent) * forward, Math.Pow(stretch, -exponent) * lateral,
-                Math.Pow(stretch, -exponent), s.SlowWindowSeconds,
-                FormattableName(source.Name, stretch, forward, lateral));
+            double gain = Math.Exp(random.Uniform(Math.Log(s.MinGain), Math.Log(s.MaxGain))) * Math.Pow(stretch, -exponent);
+            return Transform(source, stretch, gain * forward, gain * lateral, gain, s.SlowWindowSeconds,
+                AugmentedName(source.Name, stretch, gain, forward, lateral));
         }
 
-        static string FormattableName(string name, double stretch, double forward, double lateral)
-            => string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0}~x{1:F2}f{2:F2}l{3:F2}", name, stretch, forward, lateral);
+        /// <summary>"original~..." names the copy and its changes; the part before '~' is the original's name.</summary>
+        static string AugmentedName(string name, double stretch, double gain, double forward, double lateral)
+            => string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0}~t{1:F2}g{2:F2}f{3:F2}l{4:F2}", name, stretch, gain, forward, lateral);
 
         /// <summary>
         /// The deterministic core of <see cref="Augment"/>: stretches time by <paramref name="stretch"/> and multiplies the

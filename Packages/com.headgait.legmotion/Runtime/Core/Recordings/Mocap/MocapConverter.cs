@@ -261,8 +261,9 @@ namespace HeadGait.Mocap
                 i = j;
             }
             double medianStance = MedianLength(runs, true, n) * dt, medianSwing = MedianLength(runs, false, n) * dt;
-            if (double.IsNaN(medianStance)) medianStance = 0.62;
-            if (double.IsNaN(medianSwing)) medianSwing = 0.38;
+            // No complete stance or swing seen: assume a 1 s cycle with Perry's proportions.
+            if (double.IsNaN(medianStance)) medianStance = PhaseMap.PerryStance;
+            if (double.IsNaN(medianSwing)) medianSwing = 1 - PhaseMap.PerryStance;
             var labels = new GaitPhase[n];
             foreach (var r in runs)
             {
@@ -275,21 +276,10 @@ namespace HeadGait.Mocap
                 for (int i = r.start; i < r.end; i++)
                 {
                     double frac = Math.Min(Math.Max((i * dt - t0) / (t1 - t0), 0), 0.999999);
-                    double percent = r.stance ? 62 * frac : 62 + 38 * frac;
-                    labels[i] = PerryPhase(percent);
+                    labels[i] = PhaseMap.PerryPhaseAt(r.stance ? PhaseMap.PerryStance * frac : PhaseMap.PerryStance + (1 - PhaseMap.PerryStance) * frac);
                 }
             }
             return labels;
-        }
-
-        /// <summary>Perry's phase boundaries in percent of the gait cycle.</summary>
-        static readonly double[] PerryPercent = { 0, 2, 12, 31, 50, 62, 75, 87 };
-
-        static GaitPhase PerryPhase(double percent)
-        {
-            for (int p = PerryPercent.Length - 1; p >= 0; p--)
-                if (percent >= PerryPercent[p]) return (GaitPhase)p;
-            return GaitPhase.InitialContact;
         }
 
         static double MedianLength(List<(int start, int end, bool stance)> runs, bool stance, int n)

@@ -1,0 +1,138 @@
+using System;
+using System.Globalization;
+
+namespace HeadGait
+{
+    /// <summary>
+    /// Shared part of the learned classifiers (SVM, BLSTM): reads the features a model file names, standardises them,
+    /// lets the model score each class (a stride segment naming both feet's phases, or Standing) and turns the best
+    /// class into a prediction. Its stride position is the segment's, nudged towards the runner-up neighbour; its step
+    /// period comes from the time between predicted foot contacts.
+    /// </summary>
+    public abstract class LearnedClassifier : IGaitClassifier
+    {
+        readonly double[] inputMean;
+        readonly double[] inputScale;
+        readonly double[] features;
+        readonly double[] scores;
+        int lastClass = -1;
+        double lastContactTime = double.NaN;
+        double stepPeriod;
+
+        protected LearnedClassifier(ModelFile model, string kind)
+        {
+            if (model == null) throw new ArgumentNullException(nameof(model));
+            Source = model.Source;
+            if (model.Kind != kind) throw new ModelFormatException(model.Source, $"is a '{model.Kind}' model, not '{kind}'");
+            try
+            {
+                Features = WindowFeatures.Parse(model.Need("features"));
+                PhaseMap = PhaseMap.Parse(model.Need("phase_map"));
+            }
+            catch (FormatException e)
+            {
+                throw new ModelFormatException(model.Source, e.Message);
+            }
+            Segments = new StrideSegments(PhaseMap);
+            string classes = model.Need("classes");
+            if (classes != Segments.Names())
+                throw new ModelFormatException(model.Source, $"classes '{classes}' do not match its phase map's stride segments '{Segments.Names()}'");
+            int c = Features.Channels.Length;
+            inputMean = model.Tensor("input_mean", c);
+            inputScale = model.Tensor("input_scale", c);
+            foreach (var s in inputScale)
+                if (!(s > 0)) throw new ModelFormatException(model.Source, "input_scale must be positive");
+            features = new double[Features.Width];
+            scores = new double[Segments.ClassCount];
+            stepPeriod = DefaultStepPeriod;
+        }
+
+        /// <summary>Step period assumed until two predicted contacts have been seen (s).</summary>
+        public const double DefaultStepPeriod = 0.55;
+
+        public abstract string Name { get; }
+        public string Source { get; }
+        public PhaseMap PhaseMap { get; }
+        public StrideSegments Segments { get; }
+        public WindowFeatures Features { get; }
+        public int WindowLength => Features.Samples;
+
+        /// <summary>Class scores of the last window (model-specific: probabilities for the BLSTM, votes for the SVM).</summary>
+        public double[] LastScores => scores;
+
+        /// <summary>Scores every class from standardised features ([time][channel]); higher is more likely.</summary>
+        protected abstract void Score(double[] standardised, double[] classScores);
+
+        public virtual void Reset()
+        {
+            lastClass = -1;
+            lastContactTime = double.NaN;
+            stepPeriod = DefaultStepPeriod;
+        }
+
+        /// <summary>Standardised features of a window, as the model sees them.</summary>
+        public double[] Standardise(SignalWindow window)
+        {
+            Features.Extract(window, features);
+            int c = Features.Channels.Length;
+            for (int i = 0; i < features.Length; i++) features[i] = (features[i] - inputMean[i % c]) / inputScale[i % c];
+            return features;
+        }
+
+        /// <summary>Class scores for already standardised features (for checks against the training framework).</summary>
+        public double[] ScoreFeatures(double[] standardised)
+        {
+            if (standardised.Length != Features.Width) throw new ArgumentException($"Expected {Features.Width} features, got {standardised.Length}.");
+            Score(standardised, scores);
+            return scores;
+        }
+
+        public GaitPrediction Classify(SignalWindow window)
+        {
+            Score(Standardise(window), scores);
+            int best = 0;
+            for (int k = 1; k < scores.Length; k++)
+                if (scores[k] > scores[best]) best = k;
+            double now = window.EndTime;
+            if (best == Segments.StandingClass)
+            {
+                lastClass = best;
+                lastContactTime = double.NaN;
+                return GaitPrediction.Standing(now, scores[best]);
+            }
+            TrackContacts(best, now);
+            lastClass = best;
+            // Within the segment, lean towards whichever neighbour scores higher.
+            int n = Segments.Count;
+            double before = scores[(best + n - 1) % n], after = scores[(best + 1) % n];
+            double lean = (after - before) / (Math.Abs(scores[best]) + Math.Abs(before) + Math.Abs(after) + 1e-12);
+            double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
+            return GaitPrediction.Walking(now, s, stepPeriod, scores[best], Segments.Left(best), Segments.Right(best));
+        }
+
+        /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>
+        void TrackContacts(int cls, double now)
+        {
+            if (lastClass < 0 || lastClass == Segments.StandingClass || cls == lastClass) return;
+            int n = Segments.Count;
+            int forward = (cls - lastClass + n) % n;
+            if (forward > n / 2) return; // moved backwards: no new contact
+            bool contact = false;
+            for (int k = 1; k <= forward; k++)
+            {
+                int seg = (lastClass + k) % n, prev = (seg + n - 1) % n;
+                contact |= GaitPhases.IsSwing(Segments.Left(prev)) && GaitPhases.IsStance(Segments.Left(seg));
+                contact |= GaitPhases.IsSwing(Segments.Right(prev)) && GaitPhases.IsStance(Segments.Right(seg));
+            }
+            if (!contact) return;
+            if (!double.IsNaN(lastContactTime))
+            {
+                double interval = now - lastContactTime;
+                if (interval > 0.25 && interval < 1.2) stepPeriod = 0.7 * stepPeriod + 0.3 * interval;
+            }
+            lastContactTime = now;
+        }
+
+        protected static string Describe(double v) => v.ToString("G4", CultureInfo.InvariantCulture);
+    }
+}

@@ -1,0 +1,89 @@
+using System;
+
+namespace HeadGait
+{
+    /// <summary>
+    /// SVM: support vector machine with a polynomial kernel K(a, b) = (gamma a.b + coef0)^degree (the paper: cubic,
+    /// C = 100), one-versus-one over the stride segments and Standing as LIBSVM trains it. Each pair's decision value
+    /// votes for one of its two classes; the class with most votes wins, ties going to the lower class. Scores are the
+    /// votes. Allocation-free per window.
+    /// </summary>
+    public sealed class SvmClassifier : LearnedClassifier
+    {
+        public const string Kind = "svm";
+
+        readonly int classes, width, vectors, degree;
+        readonly double gamma, coef0;
+        readonly double[] supportVectors; // [nSV x D]
+        readonly double[] dualCoef;       // [(K-1) x nSV]
+        readonly double[] intercept;      // [K(K-1)/2]
+        readonly int[] start, count;      // each class's support vectors
+        readonly double[] kernel;
+        readonly double[] decision;
+
+        public SvmClassifier(ModelFile model) : base(model, Kind)
+        {
+            classes = Segments.ClassCount;
+            width = Features.Width;
+            gamma = model.NeedDouble("gamma");
+            coef0 = model.NeedDouble("coef0");
+            degree = model.NeedInt("degree", 1, 5);
+            if (!(gamma > 0)) throw new ModelFormatException(model.Source, "'gamma' must be positive");
+            var nSupport = model.Tensor("n_support", classes);
+            start = new int[classes];
+            count = new int[classes];
+            for (int k = 0; k < classes; k++)
+            {
+                double v = nSupport[k];
+                if (v < 0 || v != Math.Floor(v) || v > 10000000) throw new ModelFormatException(model.Source, $"n_support[{k}] = {v} is not a count");
+                count[k] = (int)v;
+                start[k] = k == 0 ? 0 : start[k - 1] + count[k - 1];
+            }
+            vectors = start[classes - 1] + count[classes - 1];
+            if (vectors < 1) throw new ModelFormatException(model.Source, "has no support vectors");
+            supportVectors = model.Tensor("support_vectors", vectors, width);
+            dualCoef = model.Tensor("dual_coef", classes - 1, vectors);
+            intercept = model.Tensor("intercept", classes * (classes - 1) / 2);
+            kernel = new double[vectors];
+            decision = new double[intercept.Length];
+        }
+
+        public SvmClassifier(string path) : this(ModelFile.Load(path)) { }
+
+        public override string Name => "SVM";
+        public int SupportVectors => vectors;
+
+        /// <summary>Pairwise decision values of the last window, in LIBSVM's order (0 vs 1, 0 vs 2, ..., K-2 vs K-1).</summary>
+        public double[] LastDecision => decision;
+
+        protected override void Score(double[] x, double[] votes)
+        {
+            for (int s = 0; s < vectors; s++)
+            {
+                double dot = 0;
+                int row = s * width;
+                for (int i = 0; i < width; i++) dot += supportVectors[row + i] * x[i];
+                double b = gamma * dot + coef0, p = b;
+                for (int d = 1; d < degree; d++) p *= b;
+                kernel[s] = p;
+            }
+            Array.Clear(votes, 0, classes);
+            int pair = 0;
+            for (int i = 0; i < classes; i++)
+            {
+                for (int j = i + 1; j < classes; j++)
+                {
+                    // LIBSVM: class i's vectors carry coefficients in row j-1, class j's in row i.
+                    double sum = intercept[pair];
+                    int ri = (j - 1) * vectors, rj = i * vectors;
+                    for (int s = start[i]; s < start[i] + count[i]; s++) sum += dualCoef[ri + s] * kernel[s];
+                    for (int s = start[j]; s < start[j] + count[j]; s++) sum += dualCoef[rj + s] * kernel[s];
+                    decision[pair] = sum;
+                    if (sum > 0) votes[i]++;
+                    else votes[j]++;
+                    pair++;
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,130 @@
+using System;
+
+namespace HeadGait
+{
+    public sealed class StepClockSettings
+    {
+        /// <summary>Contacts closer than this to the previous one are the same footfall (s).</summary>
+        public double MinStepInterval = 0.3;
+
+        /// <summary>A contact further than this from the previous one starts a new walking bout (s).</summary>
+        public double MaxStepInterval = 1.0;
+
+        /// <summary>Step period assumed until two contacts have been seen (s).</summary>
+        public double InitialStepPeriod = 0.55;
+
+        /// <summary>Standing is reported once no contact came for this many step periods.</summary>
+        public double StandingAfterPeriods = 1.5;
+
+        /// <summary>Contacts at step-like intervals needed before walking is reported (1: the first contact starts walking).</summary>
+        public int ContactsToStart = 2;
+
+        /// <summary>
+        /// How much of the earlier contacts' side evidence carries over per step (0: each contact decides alone). Steps
+        /// alternate feet, so a clear earlier contact says which foot the next one is.
+        /// </summary>
+        public double SideMemory = 0.8;
+
+        /// <summary>
+        /// Windows in a row that the walking gate rejects before a walking bout ends. The clock alone would walk on for
+        /// StandingAfterPeriods after the last contact; a head that has stopped bouncing says sooner that the walk is over.
+        /// </summary>
+        public int StopAfterStillWindows = 15;
+
+        public StepClockSettings Clone() => (StepClockSettings)MemberwiseClone();
+    }
+
+    /// <summary>
+    /// Turns detected foot contacts into a stride position: contacts alternate feet (which one is decided by the lateral
+    /// evidence of this and earlier contacts), the step period follows the intervals between them, and between contacts the
+    /// stride position advances at that period. Shared by THR and COR, which differ only in how they detect a contact.
+    /// </summary>
+    public sealed class StepClock
+    {
+        readonly StepClockSettings settings;
+        readonly PhaseMap map;
+        double lastContact;
+        double period;
+        double sideEvidence;
+        int contactsInBout;
+        Foot lastFoot;
+
+        public StepClock(PhaseMap map, StepClockSettings settings = null)
+        {
+            this.map = map ?? throw new ArgumentNullException(nameof(map));
+            this.settings = settings ?? new StepClockSettings();
+            Reset();
+        }
+
+        public StepClockSettings Settings => settings;
+        public double StepPeriod => period;
+        public double LastContactTime => lastContact;
+        public Foot LastFoot => lastFoot;
+
+        public void Reset()
+        {
+            lastContact = double.NegativeInfinity;
+            period = settings.InitialStepPeriod;
+            sideEvidence = 0;
+            contactsInBout = 0;
+            lastFoot = Foot.Left;
+        }
+
+        /// <summary>
+        /// A foot contact at <paramref name="time"/>; <paramref name="leftEvidence"/> &gt; 0 says it is the left foot's.
+        /// Returns false when it is ignored (too close to the previous contact).
+        /// </summary>
+        public bool Contact(double time, double leftEvidence)
+        {
+            double interval = time - lastContact;
+            if (interval < settings.MinStepInterval) return false;
+            if (interval > settings.MaxStepInterval)
+            {
+                contactsInBout = 1;
+                sideEvidence = leftEvidence;
+            }
+            else
+            {
+                if (contactsInBout >= 1) period = contactsInBout == 1 ? interval : 0.7 * period + 0.3 * interval;
+                contactsInBout++;
+                // The previous contact was the other foot: its evidence counts against this one being the same side.
+                sideEvidence = leftEvidence - settings.SideMemory * sideEvidence;
+            }
+            lastFoot = sideEvidence >= 0 ? Foot.Left : Foot.Right;
+            lastContact = time;
+            return true;
+        }
+
+        /// <summary>
+        /// Starts walking at once, as if a foot had landed at <paramref name="contactTime"/> in a walk of the given step
+        /// period (for detectors that recognise a whole step in one window); <paramref name="leftEvidence"/> &gt; 0 says the left.
+        /// </summary>
+        public void Start(double contactTime, double leftEvidence, double stepPeriod)
+        {
+            lastContact = contactTime;
+            sideEvidence = leftEvidence;
+            lastFoot = leftEvidence >= 0 ? Foot.Left : Foot.Right;
+            period = stepPeriod;
+            contactsInBout = Math.Max(contactsInBout, settings.ContactsToStart);
+        }
+
+        /// <summary>Ends the walking bout now (the head has stopped moving like walking): the next contact starts a new one.</summary>
+        public void Stop()
+        {
+            contactsInBout = 0;
+            lastContact = double.NegativeInfinity;
+        }
+
+        public bool IsWalking(double now)
+            => contactsInBout >= settings.ContactsToStart && now - lastContact <= settings.StandingAfterPeriods * period;
+
+        /// <summary>Stride position now: the last contact's foot landing, advanced at the step period.</summary>
+        public double StridePosition(double now)
+            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now - lastContact) / (2 * period);
+
+        public GaitPrediction Predict(double now, double confidence)
+            => IsWalking(now)
+                ? GaitPrediction.Walking(now, StridePosition(now), period, confidence, map)
+                : GaitPrediction.Standing(now, confidence);
+    }
+}

@@ -1,0 +1,199 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+
+namespace HeadGait
+{
+    /// <summary>
+    /// A learned walking/standing gate for THR and COR: logistic regression on how much the head moves in the newest
+    /// 0.5 s (log spread of SMV, of the vertical, lateral and forward acceleration, and of SMV's sample-to-sample change)
+    /// and how level it is (mean vertical specific force over g: bowing tips it far forward). Gestures move the head
+    /// sideways and forwards, walking bounces it up and down at step frequency with sharp heel strikes; a threshold on
+    /// SMV alone (or a fixed correlation) confuses waving with calm walking.
+    /// </summary>
+    public sealed class WalkingGate
+    {
+        public const int FeatureCount = 6;
+        const int Samples = 50;
+        const double Epsilon = 0.01;
+
+        readonly double[] weights; // FeatureCount weights, then the bias
+        readonly double[] features = new double[FeatureCount];
+
+        public WalkingGate(double[] weights)
+        {
+            if (weights == null || weights.Length != FeatureCount + 1) throw new ArgumentException($"A walking gate has {FeatureCount + 1} weights.");
+            foreach (var w in weights)
+                if (!ImuSample.IsFiniteNumber(w) || Math.Abs(w) > 1e4) throw new ArgumentException("Walking gate weights must be finite and below 1e4.");
+            this.weights = (double[])weights.Clone();
+        }
+
+        /// <summary>Lets everything through (no gate).</summary>
+        public static WalkingGate Open { get; } = new WalkingGate(new double[] { 0, 0, 0, 0, 0, 0, 1 });
+
+        public double[] Weights => (double[])weights.Clone();
+
+        /// <summary>Log-odds that the window's newest 0.5 s is walking; positive passes.</summary>
+        public double Score(SignalWindow window)
+        {
+            Features(window, features);
+            double z = weights[FeatureCount];
+            for (int i = 0; i < FeatureCount; i++) z += weights[i] * features[i];
+            return z;
+        }
+
+        public bool Passes(SignalWindow window) => Score(window) > 0;
+
+        /// <summary>The gate's inputs for the newest 50 samples (or fewer right after a restart).</summary>
+        public static void Features(SignalWindow w, double[] f)
+        {
+            int n = Math.Min(Samples, Math.Min(w.Count, w.Length));
+            int first = w.Length - n;
+            f[0] = LogSpread(w.Smv, first, n);
+            f[1] = LogSpread(w.Vertical, first, n);
+            f[2] = LogSpread(w.Lateral, first, n);
+            f[3] = LogSpread(w.Forward, first, n);
+            double d = 0;
+            for (int i = first + 1; i < first + n; i++) d += Math.Abs(w.Smv[i] - w.Smv[i - 1]);
+            f[4] = Math.Log(d / Math.Max(1, n - 1) + Epsilon);
+            double up = 0;
+            for (int i = first; i < first + n; i++) up += w.Vertical[i];
+            f[5] = n > 0 ? up / n / StandardGravity : 1;
+        }
+
+        const double StandardGravity = 9.80665;
+
+        static double LogSpread(double[] v, int first, int n)
+        {
+            if (n < 2) return Math.Log(Epsilon);
+            double m = 0, m2 = 0;
+            for (int i = first; i < first + n; i++)
+            {
+                m += v[i];
+                m2 += v[i] * v[i];
+            }
+            m /= n;
+            return Math.Log(Math.Sqrt(Math.Max(0, m2 / n - m * m)) + Epsilon);
+        }
+
+        public string Serialize()
+        {
+            var sb = new StringBuilder();
+            for (int i = 0; i < weights.Length; i++) sb.Append(i > 0 ? "," : "").Append(weights[i].ToString("R", CultureInfo.InvariantCulture));
+            return sb.ToString();
+        }
+
+        /// <summary>
+        /// Fits the gate on windows of labelled recordings (every 5th window; walking = the newest sample is labelled
+        /// walking), both classes weighted equally, then sets the bias so that <paramref name="walkingPass"/> of the walking
+        /// windows pass: the gate only has to keep out what clearly is not walking; the detectors decide the rest.
+        /// Throws <see cref="InvalidOperationException"/> without both classes.
+        /// </summary>
+        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = 0.99)
+        {
+            var walking = new List<double[]>();
+            var standing = new List<double[]>();
+            foreach (var rec in recordings)
+            {
+                if (!rec.HasTruth) continue;
+                var pre = new StreamPreprocessor();
+                int row = -1;
+                long count = 0;
+                var rows = rec.Samples;
+                foreach (var s in rows)
+                {
+                    pre.Push(s.Imu, w =>
+                    {
+                        if (count++ % 5 != 0) return;
+                        while (row + 1 < rows.Count && rows[row + 1].Imu.Time <= w.EndTime + 1e-9) row++;
+                        if (row < 0 || !rows[row].HasTruth) return;
+                        var f = new double[FeatureCount];
+                        Features(w, f);
+                        (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(f);
+                    });
+                }
+            }
+            if (walking.Count < 20 || standing.Count < 20)
+                throw new InvalidOperationException($"The walking gate needs walking and standing windows: found {walking.Count} and {standing.Count}.");
+            var w8 = Fit(walking, standing);
+            var scores = new List<double>();
+            foreach (var f in walking)
+            {
+                double z = 0;
+                for (int i = 0; i < FeatureCount; i++) z += w8[i] * f[i];
+                scores.Add(z);
+            }
+            scores.Sort();
+            w8[FeatureCount] = -scores[(int)Math.Floor((1 - walkingPass) * (scores.Count - 1))] + 1e-9;
+            return new WalkingGate(w8);
+        }
+
+        /// <summary>Balanced logistic regression by Newton's method (a 6x6 system), with a small ridge for stability.</summary>
+        static double[] Fit(List<double[]> positive, List<double[]> negative)
+        {
+            int d = FeatureCount + 1;
+            var w = new double[d];
+            double wp = 0.5 / positive.Count, wn = 0.5 / negative.Count;
+            for (int iter = 0; iter < 30; iter++)
+            {
+                var g = new double[d];
+                var h = new double[d, d];
+                void Add(double[] f, double y, double weight)
+                {
+                    double z = w[d - 1];
+                    for (int i = 0; i < d - 1; i++) z += w[i] * f[i];
+                    double p = 1 / (1 + Math.Exp(-z));
+                    double r = weight * (p - y), s = weight * p * (1 - p);
+                    for (int i = 0; i < d; i++)
+                    {
+                        double fi = i < d - 1 ? f[i] : 1;
+                        g[i] += r * fi;
+                        for (int j = 0; j < d; j++) h[i, j] += s * fi * (j < d - 1 ? f[j] : 1);
+                    }
+                }
+                foreach (var f in positive) Add(f, 1, wp);
+                foreach (var f in negative) Add(f, 0, wn);
+                for (int i = 0; i < d; i++)
+                {
+                    g[i] += 1e-4 * w[i];
+                    h[i, i] += 1e-4;
+                }
+                var step = Solve(h, g);
+                double change = 0;
+                for (int i = 0; i < d; i++)
+                {
+                    w[i] -= step[i];
+                    change += Math.Abs(step[i]);
+                }
+                if (change < 1e-8) break;
+            }
+            return w;
+        }
+
+        static double[] Solve(double[,] a, double[] b)
+        {
+            int n = b.Length;
+            var m = (double[,])a.Clone();
+            var x = (double[])b.Clone();
+            for (int c = 0; c < n; c++)
+            {
+                int pivot = c;
+                for (int r = c + 1; r < n; r++) if (Math.Abs(m[r, c]) > Math.Abs(m[pivot, c])) pivot = r;
+                for (int k = 0; k < n; k++) (m[c, k], m[pivot, k]) = (m[pivot, k], m[c, k]);
+                (x[c], x[pivot]) = (x[pivot], x[c]);
+                double diag = m[c, c];
+                if (Math.Abs(diag) < 1e-12) continue;
+                for (int r = 0; r < n; r++)
+                {
+                    if (r == c) continue;
+                    double f = m[r, c] / diag;
+                    for (int k = c; k < n; k++) m[r, k] -= f * m[c, k];
+                    x[r] -= f * x[c];
+                }
+            }
+            for (int i = 0; i < n; i++) x[i] = Math.Abs(m[i, i]) < 1e-12 ? 0 : x[i] / m[i, i];
+            return x;
+        }
+    }
+}

@@ -1,0 +1,58 @@
+using System.Collections.Generic;
+using HeadGait.Synthetic;
+
+namespace HeadGait.Training
+{
+    /// <summary>The training steps `headgait train` and the cross-validation benchmark share, so both train the same way.</summary>
+    public static class GaitTraining
+    {
+        /// <summary>Augmented copies of each labelled recording (see <see cref="RecordingAugmentation"/>) made per original.</summary>
+        public const int DefaultAugmentedCopies = 2;
+
+        public const ulong DefaultSeed = 20261122;
+
+        /// <summary>The recordings followed by <paramref name="copies"/> augmented copies of each labelled one (seeded by name).</summary>
+        public static List<Recording> WithAugmentation(IReadOnlyList<Recording> recordings, int copies, ulong seed = DefaultSeed)
+        {
+            var list = new List<Recording>(recordings);
+            foreach (var rec in recordings)
+            {
+                if (!rec.HasTruth) continue;
+                var random = new DeterministicRandom(seed ^ Hash(rec.Name));
+                for (int k = 0; k < copies; k++) list.Add(RecordingAugmentation.Augment(rec, random));
+            }
+            return list;
+        }
+
+        /// <summary>The walking gate THR and COR share; open when the recordings hold no standing to learn from.</summary>
+        public static WalkingGate TrainGate(IReadOnlyList<Recording> training)
+        {
+            try
+            {
+                return WalkingGate.Train(training);
+            }
+            catch (System.InvalidOperationException)
+            {
+                return WalkingGate.Open;
+            }
+        }
+
+        public static ThresholdSettings TrainThreshold(IReadOnlyList<Recording> training, PhaseMap map, WalkingGate gate)
+            => ThresholdClassifier.Calibrate(training, map, gate);
+
+        public static CorrelationTemplate TrainCorrelation(IReadOnlyList<Recording> training, PhaseMap map, WalkingGate gate, CorrelationSettings settings = null)
+            => CorrelationClassifier.Calibrate(CorrelationTemplate.Train(training, map, gate), training, settings);
+
+        /// <summary>FNV-1a of a name: a per-recording seed that does not depend on the order recordings are listed in.</summary>
+        public static ulong Hash(string s)
+        {
+            ulong h = 1469598103934665603UL;
+            foreach (char c in s ?? "")
+            {
+                h ^= c;
+                h *= 1099511628211UL;
+            }
+            return h;
+        }
+    }
+}

@@ -1,0 +1,149 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Text;
+
+namespace HeadGait.Training
+{
+    /// <summary>
+    /// Exports what a learned classifier sees, for training outside the package (Python): every window the live
+    /// preprocessor produces from each recording (or every <c>stride</c>-th), its features as
+    /// <see cref="WindowFeatures.Extract"/> makes them, and the class of the labels at the window's newest sample.
+    /// Files (NumPy .npy, little-endian): X float32 [N, T, C], y int32 [N] (class; -1 where the label pair is not a
+    /// stride segment), file int32 [N] (recording index in files.tsv), augmented int32 [N] (1 for augmented copies), plus
+    /// files.tsv and dataset.txt (features, classes, phase map).
+    /// </summary>
+    public static class WindowDataset
+    {
+        public sealed class Item
+        {
+            public Recording Recording;
+            /// <summary>Index of the original recording (augmented copies share it, so folds keep them together).</summary>
+            public int FileIndex;
+
+            /// <summary>An augmented copy: trained on, never scored.</summary>
+            public bool Augmented;
+        }
+
+        public sealed class Summary
+        {
+            public long Windows;
+            public long Unlabelled;
+            public long[] PerClass;
+        }
+
+        public static Summary Export(IReadOnlyList<Item> items, IReadOnlyList<string> fileNames, WindowFeatures features,
+            StrideSegments segments, int stride, string directory)
+        {
+            if (stride < 1) throw new ArgumentException("Stride must be at least 1.", nameof(stride));
+            Directory.CreateDirectory(directory);
+            var summary = new Summary { PerClass = new long[segments.ClassCount] };
+            int t = features.TimeSteps, c = features.Channels.Length;
+            var buffer = new double[features.Width];
+            using (var x = new NpyWriter(Path.Combine(directory, "X.npy"), "<f4", t, c))
+            using (var y = new NpyWriter(Path.Combine(directory, "y.npy"), "<i4"))
+            using (var file = new NpyWriter(Path.Combine(directory, "file.npy"), "<i4"))
+            using (var augmented = new NpyWriter(Path.Combine(directory, "augmented.npy"), "<i4"))
+            {
+                foreach (var item in items)
+                {
+                    var rec = item.Recording;
+                    if (!rec.HasTruth) continue;
+                    var pre = new StreamPreprocessor(new PreprocessorSettings { WindowLength = features.Samples });
+                    var rows = rec.Samples;
+                    int labelRow = -1;
+                    long produced = 0;
+                    foreach (var s in rows)
+                    {
+                        pre.Push(s.Imu, w =>
+                        {
+                            if (produced++ % stride != 0) return;
+                            while (labelRow + 1 < rows.Count && rows[labelRow + 1].Imu.Time <= w.EndTime + 1e-9) labelRow++;
+                            if (labelRow < 0 || !rows[labelRow].HasTruth) return;
+                            int cls = segments.ClassOf(rows[labelRow].Left, rows[labelRow].Right);
+                            features.Extract(w, buffer);
+                            foreach (var v in buffer) x.Write((float)v);
+                            y.Write(cls);
+                            file.Write(item.FileIndex);
+                            augmented.Write(item.Augmented ? 1 : 0);
+                            summary.Windows++;
+                            if (cls < 0) summary.Unlabelled++;
+                            else summary.PerClass[cls]++;
+                        });
+                    }
+                }
+            }
+            using (var w = new StreamWriter(Path.Combine(directory, "files.tsv"), false, new UTF8Encoding(false)))
+            {
+                w.NewLine = "\n";
+                w.WriteLine("index\tname\tstyle");
+                for (int i = 0; i < fileNames.Count; i++) w.WriteLine($"{i}\t{fileNames[i]}\t{CrossValidation.StyleOf(fileNames[i])}");
+            }
+            using (var w = new StreamWriter(Path.Combine(directory, "dataset.txt"), false, new UTF8Encoding(false)))
+            {
+                w.NewLine = "\n";
+                w.WriteLine($"features={features}");
+                w.WriteLine($"classes={segments.Names()}");
+                w.WriteLine($"phase_map={segments.Map.Serialize()}");
+                w.WriteLine($"stride={stride}");
+                w.WriteLine($"windows={summary.Windows}");
+            }
+            return summary;
+        }
+
+        /// <summary>Streams a NumPy .npy array whose first dimension is counted while writing; the header is patched on close.</summary>
+        sealed class NpyWriter : IDisposable
+        {
+            const int HeaderSize = 128;
+            readonly FileStream stream;
+            readonly BinaryWriter writer;
+            readonly string dtype;
+            readonly int[] inner;
+            long values;
+
+            public NpyWriter(string path, string dtype, params int[] innerShape)
+            {
+                this.dtype = dtype;
+                inner = innerShape;
+                stream = new FileStream(path, FileMode.Create, FileAccess.Write);
+                writer = new BinaryWriter(stream);
+                writer.Write(new byte[HeaderSize]);
+            }
+
+            public void Write(float v) => Write(BitConverter.GetBytes(v), 1);
+            public void Write(int v) => Write(BitConverter.GetBytes(v), 1);
+
+            void Write(byte[] b, int count)
+            {
+                if (!BitConverter.IsLittleEndian) Array.Reverse(b);
+                writer.Write(b);
+                values += count;
+            }
+
+            public void Dispose()
+            {
+                long per = 1;
+                foreach (var d in inner) per *= d;
+                long rows = values / per;
+                var shape = new StringBuilder().Append(rows);
+                foreach (var d in inner) shape.Append(", ").Append(d);
+                if (inner.Length == 0) shape.Append(',');
+                string dict = $"{{'descr': '{dtype}', 'fortran_order': False, 'shape': ({shape}), }}";
+                int len = HeaderSize - 10;
+                string padded = dict.PadRight(len - 1) + "\n";
+                var bytes = new byte[HeaderSize];
+                bytes[0] = 0x93;
+                Encoding.ASCII.GetBytes("NUMPY", 0, 5, bytes, 1);
+                bytes[6] = 1;
+                bytes[7] = 0;
+                bytes[8] = (byte)(len & 0xFF);
+                bytes[9] = (byte)(len >> 8);
+                Encoding.ASCII.GetBytes(padded, 0, padded.Length, bytes, 10);
+                writer.Flush();
+                stream.Seek(0, SeekOrigin.Begin);
+                stream.Write(bytes, 0, bytes.Length);
+                writer.Dispose();
+            }
+        }
+    }
+}

@@ -1,0 +1,187 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Text;
+using HeadGait.Training;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    public class LearnedClassifierTests
+    {
+        static string Models => SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found");
+
+        static string ModelPath(string file) => Path.Combine(Models, file);
+
+        [TestCase(GaitModels.SvmFile)]
+        [TestCase(GaitModels.BlstmFile)]
+        public void ForwardPassEqualsTheTrainingFrameworksOutputs(string file)
+        {
+            var model = ModelFile.Load(ModelPath(file));
+            var reference = ModelFile.Load(ReferenceCheck.ReferencePath(ModelPath(file)));
+            Assert.That(reference.ShapeOf("inputs")[0], Is.GreaterThanOrEqualTo(32), "reference windows");
+            Assert.That(ReferenceCheck.MaxDifference(model, reference), Is.LessThanOrEqualTo(1e-5));
+        }
+
+        [Test]
+        public void ACorruptedWeightChangesTheOutputsBeyondTheLimit()
+        {
+            // The check above can fail: perturb one LSTM weight and it must notice.
+            var model = ModelFile.Load(ModelPath(GaitModels.BlstmFile));
+            var weights = model.Tensor("lstm_w_hh", model.ShapeOf("lstm_w_hh"));
+            weights[7] += 0.5;
+            var reference = ModelFile.Load(ReferenceCheck.ReferencePath(ModelPath(GaitModels.BlstmFile)));
+            Assert.That(ReferenceCheck.MaxDifference(model, reference), Is.GreaterThan(1e-5));
+        }
+
+        [Test]
+        public void CommittedModelsAgreeOnClassesFeaturesAndPhaseMap()
+        {
+            var models = GaitModels.Load(Models);
+            Assert.That(models.Problems, Is.Empty);
+            var svm = new SvmClassifier(models.Svm);
+            var blstm = new BlstmClassifier(models.Blstm);
+            Assert.That(svm.Segments.Names(), Is.EqualTo(blstm.Segments.Names()));
+            Assert.That(svm.PhaseMap.Serialize(), Is.EqualTo(models.Correlation.PhaseMap.Serialize()), "one phase map for all four classifiers");
+            Assert.That(models.Threshold.PhaseMap.Serialize(), Is.EqualTo(models.Correlation.PhaseMap.Serialize()));
+            Assert.That(svm.Segments.Count, Is.EqualTo(16));
+            Assert.That(svm.Features.ToString(), Is.EqualTo(blstm.Features.ToString()));
+        }
+
+        [TestCase("blstm")]
+        [TestCase("svm")]
+        public void RecognisesGeneratedWalkingAndStanding(string name)
+        {
+            var models = GaitModels.Load(Models);
+            var rec = TestData.Eval("walk_straight");
+            var r = ReplayEvaluator.Run(rec, models.Create(name, out string warning));
+            Assert.That(warning, Is.Null);
+            // Trained on people, tried on the package's generated walker: it must at least tell walking from standing.
+            Assert.That(r.ClassifierMetrics.WalkingAsStanding, Is.LessThan(0.15));
+            Assert.That(r.ClassifierMetrics.StandingAsWalking, Is.LessThan(0.15));
+            Assert.That(r.AnimatorMetrics.StepRecall, Is.GreaterThan(0.8));
+        }
+
+        [Test]
+        public void OnnxExportsRunInOnnxRuntimeLikeTheTrainingFramework()
+        {
+            // ONNX Runtime is not on NuGet here; its npm package is (training/package.json, installed by .ci/run).
+            string script = Path.GetFullPath(Path.Combine(Models, "..", "..", "..", "training", "check_onnx.mjs"));
+            string modules = Path.Combine(Path.GetDirectoryName(script) ?? ".", "node_modules", "onnxruntime-node");
+            if (!File.Exists(script) || !Directory.Exists(modules))
+                Assert.Ignore($"ONNX Runtime for Node not installed (cd training && npm ci --ignore-scripts); looked for {modules}");
+            var info = new ProcessStartInfo("node", $"\"{script}\" \"{Models}\"") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+            Process p;
+            try
+            {
+                p = Process.Start(info);
+            }
+            catch (System.ComponentModel.Win32Exception)
+            {
+                Assert.Ignore("node is not installed");
+                return;
+            }
+            string output = p.StandardOutput.ReadToEnd() + p.StandardError.ReadToEnd();
+            p.WaitForExit();
+            TestContext.WriteLine(output);
+            Assert.That(p.ExitCode, Is.EqualTo(0), output);
+            Assert.That(output, Does.Contain("blstm.onnx"));
+            Assert.That(output, Does.Contain("svm.onnx"));
+        }
+    }
+
+    public class ModelFileTests
+    {
+        static byte[] Blstm() => File.ReadAllBytes(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.BlstmFile));
+
+        static ModelFormatException Refused(byte[] bytes)
+            => Assert.Throws<ModelFormatException>(() => new BlstmClassifier(ModelFile.Parse(bytes, "broken.bytes")));
+
+        static int HeaderEnd(byte[] b)
+        {
+            string text = Encoding.UTF8.GetString(b, 0, Math.Min(b.Length, 20000));
+            return Encoding.UTF8.GetByteCount(text.Substring(0, text.IndexOf("\nend\n", StringComparison.Ordinal) + 5));
+        }
+
+        [Test]
+        public void RoundTripsThroughBytes()
+        {
+            var m = ModelFile.Parse(Blstm(), "blstm.bytes");
+            var again = ModelFile.Parse(m.ToBytes(), "again");
+            Assert.That(again.Kind, Is.EqualTo("blstm"));
+            Assert.That(again.Tensor("fc_b", again.ShapeOf("fc_b")), Is.EqualTo(m.Tensor("fc_b", m.ShapeOf("fc_b"))));
+        }
+
+        [Test]
+        public void EmptyTruncatedOrForeignFilesNameTheFileAndTheProblem()
+        {
+            var good = Blstm();
+            Assert.That(Refused(new byte[0]).Message, Does.StartWith("broken.bytes:").And.Contain("empty"));
+            Assert.That(Refused(Encoding.UTF8.GetBytes("PK\u0003\u0004 zip")).Message, Does.Contain("not a HeadGait model"));
+            var truncated = new byte[good.Length - 100];
+            Array.Copy(good, truncated, truncated.Length);
+            Assert.That(Refused(truncated).Message, Does.Contain("truncated"));
+            var headerOnly = new byte[HeaderEnd(good) - 10];
+            Array.Copy(good, headerOnly, headerOnly.Length);
+            Assert.That(Refused(headerOnly).Message, Does.Contain("truncated or not a model file"));
+            var longer = new byte[good.Length + 8];
+            Array.Copy(good, longer, good.Length);
+            Assert.That(Refused(longer).Message, Does.Contain("after the last tensor"));
+        }
+
+        [Test]
+        public void NaNWeightsAndWrongShapesAreRefused()
+        {
+            var good = Blstm();
+            var nan = (byte[])good.Clone();
+            var bits = BitConverter.GetBytes(float.NaN);
+            Array.Copy(bits, 0, nan, good.Length - 4, 4); // the last fc_b value
+            Assert.That(Refused(nan).Message, Does.Contain("fc_b").And.Contain("not finite"));
+
+            var m = ModelFile.Parse(good, "x");
+            var shape = m.ShapeOf("fc_w");
+            var fewer = new double[(shape[0] - 1) * shape[1]];
+            m.AddTensor("fc_w", new[] { shape[0] - 1, shape[1] }, fewer, false);
+            Assert.That(Refused(m.ToBytes()).Message, Does.Contain("fc_w"));
+
+            var wrongKind = ModelFile.Parse(good, "x");
+            wrongKind.Set("kind", "svm");
+            Assert.That(Refused(wrongKind.ToBytes()).Message, Does.Contain("'svm' model"));
+
+            var wrongClasses = ModelFile.Parse(good, "x");
+            wrongClasses.Set("classes", "IC/PSW,STAND");
+            Assert.That(Refused(wrongClasses.ToBytes()).Message, Does.Contain("classes"));
+        }
+
+        [Test]
+        public void AnUnusableModelFallsBackToCorWithAWarningAndNeverThrowsPerSample()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "headgait-fallback-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(dir);
+            try
+            {
+                string models = SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory);
+                File.Copy(Path.Combine(models, GaitModels.ThresholdFile), Path.Combine(dir, GaitModels.ThresholdFile));
+                File.Copy(Path.Combine(models, GaitModels.CorrelationFile), Path.Combine(dir, GaitModels.CorrelationFile));
+                var half = Blstm();
+                Array.Resize(ref half, half.Length / 2);
+                File.WriteAllBytes(Path.Combine(dir, GaitModels.BlstmFile), half);
+                var loaded = GaitModels.Load(dir);
+                Assert.That(loaded.Problems, Has.Some.Contains(GaitModels.BlstmFile).And.Some.Contains("truncated"));
+                Assert.That(loaded.Problems, Has.Some.Contains(GaitModels.SvmFile).And.Some.Contains("not found"));
+                var c = loaded.Create("blstm", out string warning);
+                Assert.That(c.Name, Is.EqualTo("COR"));
+                Assert.That(warning, Does.Contain("BLSTM").And.Contain("truncated"));
+                var pipeline = new GaitPipeline(c);
+                var rnd = new Synthetic.DeterministicRandom(5);
+                for (int i = 0; i < 3000; i++) pipeline.Push(i * 0.01, double.NaN, rnd.NextGaussian(), i % 7 == 0 ? double.PositiveInfinity : 9.8);
+                Assert.That(pipeline.Preprocessor.Skipped, Is.GreaterThan(0));
+            }
+            finally
+            {
+                Directory.Delete(dir, true);
+            }
+        }
+    }
+}

@@ -1,0 +1,205 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using HeadGait.Synthetic;
+using HeadGait.Training;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    public class StrideSegmentTests
+    {
+        [Test]
+        public void AStanceLongerThanHalfTheStrideCutsItIntoSixteenPairsOfPhases()
+        {
+            var seg = new StrideSegments(PhaseMap.FromStanceFraction(0.574, 0.5));
+            Assert.That(seg.Count, Is.EqualTo(16));
+            Assert.That(seg.Names(), Is.EqualTo("IC/PSW,LR/PSW,LR/ISW,MST/ISW,MST/MSW,TST/MSW,TST/TSW,PSW/TSW,PSW/IC,PSW/LR,ISW/LR,ISW/MST,MSW/MST,MSW/TST,TSW/TST,TSW/PSW,STAND"));
+            double total = 0;
+            for (int k = 0; k < seg.Count; k++)
+            {
+                total += seg.Length(k);
+                // A segment's phases are the map's anywhere inside it.
+                Assert.That(seg.Map.PhaseAt(Foot.Left, seg.Center(k)), Is.EqualTo(seg.Left(k)));
+                Assert.That(seg.Map.PhaseAt(Foot.Right, seg.Start(k) + 0.999 * seg.Length(k)), Is.EqualTo(seg.Right(k)));
+                Assert.That(seg.ClassOf(seg.Left(k), seg.Right(k)), Is.EqualTo(k));
+            }
+            Assert.That(total, Is.EqualTo(1).Within(1e-9));
+            Assert.That(seg.ClassOf(GaitPhase.Standing, GaitPhase.Standing), Is.EqualTo(seg.StandingClass));
+            Assert.That(seg.ClassOf(GaitPhase.MidStance, GaitPhase.MidStance), Is.EqualTo(-1), "both feet in mid stance never happens in this map");
+        }
+
+        [Test]
+        public void PerrysOwnMapHasAZeroLengthSegmentAndSoFifteen()
+        {
+            // Perry: left toe-off (62 %) coincides with the right foot's mid stance onset (50 + 12 %).
+            Assert.That(new StrideSegments(PhaseMap.Perry).Count, Is.EqualTo(15));
+        }
+    }
+
+    public class WindowFeatureTests
+    {
+        [Test]
+        public void AveragesBlocksOfStepSamplesEndingAtTheNewestAndCentresAllButSmv()
+        {
+            var f = WindowFeatures.Parse("samples:50 step:2 channels:smv,lateral,forward");
+            Assert.That(f.TimeSteps, Is.EqualTo(25));
+            Assert.That(f.ToString(), Is.EqualTo("samples:50 step:2 channels:smv,lateral,forward"));
+            var w = new SignalWindow(80, 100);
+            for (int i = 0; i < 80; i++)
+            {
+                w.Smv[i] = i;
+                w.Lateral[i] = 2 * i;
+                w.Forward[i] = 5;
+            }
+            var x = new double[f.Width];
+            f.Extract(w, x);
+            // The newest 50 samples are 30..79: the last block is (78 + 79) / 2, the first (30 + 31) / 2. Lateral is centred on their mean.
+            Assert.That(x[(f.TimeSteps - 1) * 3], Is.EqualTo(78.5));
+            Assert.That(x[0], Is.EqualTo(30.5));
+            Assert.That(x[(f.TimeSteps - 1) * 3 + 1], Is.EqualTo(2 * 78.5 - 2 * 54.5).Within(1e-9));
+            Assert.That(x[2], Is.EqualTo(0));
+        }
+
+        [TestCase("samples:50 step:2")]
+        [TestCase("samples:50 step:0 channels:smv")]
+        [TestCase("samples:50 step:3 channels:smv")]
+        [TestCase("samples:50 step:2 channels:smv,gyro")]
+        [TestCase("samples:x step:2 channels:smv")]
+        public void BadSpecsAreRefused(string spec) => Assert.That(() => WindowFeatures.Parse(spec), Throws.TypeOf<FormatException>());
+    }
+
+    public class AugmentationTests
+    {
+        [Test]
+        public void StretchesTimeWithTheLabelsAndScalesOnlyTheDynamicPart()
+        {
+            var rec = TestData.Eval("walk_straight");
+            var slow = RecordingAugmentation.Transform(rec, 1.25, 0.5, 0.5, 0.5, 1.0, "slow");
+            Assert.That(slow.Duration, Is.EqualTo(rec.Duration * 1.25).Within(0.02));
+            var steps = PhaseEvents.TruthSteps(rec);
+            var slowSteps = PhaseEvents.TruthSteps(slow);
+            Assert.That(slowSteps.Count, Is.EqualTo(steps.Count).Within(1));
+            double mean(List<PhaseEvents.Step> s) { double t = 0; foreach (var x in s) t += x.Duration; return t / s.Count; }
+            Assert.That(mean(slowSteps), Is.EqualTo(1.25 * mean(steps)).Within(0.01));
+            // Gravity stays: a standing head still reads about g up; the bounce halves.
+            Assert.That(slow.Samples[20].Imu.Z, Is.EqualTo(rec.Samples[16].Imu.Z).Within(0.5));
+            double Spread(Recording r)
+            {
+                double m = 0, m2 = 0;
+                int n = 0;
+                foreach (var s in r.Samples)
+                {
+                    if (s.Left == GaitPhase.Standing) continue;
+                    m += s.Imu.Z;
+                    m2 += s.Imu.Z * s.Imu.Z;
+                    n++;
+                }
+                m /= n;
+                return Math.Sqrt(m2 / n - m * m);
+            }
+            Assert.That(Spread(slow), Is.EqualTo(0.5 * Spread(rec)).Within(0.1 * Spread(rec)));
+        }
+
+        [Test]
+        public void CopiesAreSeededByNameAndKeepTheirOriginalsName()
+        {
+            var a = GaitTraining.WithAugmentation(new[] { TestData.Eval("walk_straight") }, 3);
+            var b = GaitTraining.WithAugmentation(new[] { TestData.Eval("walk_straight") }, 3);
+            Assert.That(a.Count, Is.EqualTo(4));
+            for (int i = 1; i < 4; i++)
+            {
+                Assert.That(a[i].Name, Does.StartWith("walk_straight~"));
+                Assert.That(a[i].Name, Is.EqualTo(b[i].Name));
+                Assert.That(a[i].Samples[500].Imu.Z, Is.EqualTo(b[i].Samples[500].Imu.Z));
+            }
+            Assert.That(a[1].Name, Is.Not.EqualTo(a[2].Name));
+        }
+    }
+
+    public class CrossValidationTests
+    {
+        [Test]
+        public void StylesComeFromTheCorpusNamingAndOtherNamesAreTheirOwnGroup()
+        {
+            Assert.That(CrossValidation.StyleOf("bn_wk_act_001"), Is.EqualTo("bn/act"));
+            Assert.That(CrossValidation.StyleOf("bn_neg_wl_fem_002"), Is.EqualTo("bn/fem"));
+            Assert.That(CrossValidation.StyleOf("bn1_walk-back_giant_001"), Is.EqualTo("bn1/giant"));
+            Assert.That(CrossValidation.StyleOf("my_walk"), Is.EqualTo("my_walk"));
+        }
+
+        [Test]
+        public void EveryRecordingIsTestedExactlyOnceAndNeverTrainedOnInItsFold()
+        {
+            var names = new List<string>();
+            foreach (var s in new[] { "act", "fem", "mas" })
+                for (int i = 1; i <= 7; i++) names.Add($"bn_wk_{s}_{i:000}");
+            names.Add("bn_neg_wb_fem_001");
+            foreach (var scheme in new[] { CrossValidation.ByStyle, CrossValidation.ByFile })
+            {
+                var folds = CrossValidation.Make(scheme, names);
+                var seen = new Dictionary<string, int>();
+                foreach (var f in folds)
+                    foreach (var n in f.Test) seen[n] = seen.TryGetValue(n, out int c) ? c + 1 : 1;
+                Assert.That(seen.Count, Is.EqualTo(names.Count), scheme);
+                Assert.That(seen.Values, Has.All.EqualTo(1), scheme);
+            }
+            var style = CrossValidation.LeaveOneStyleOut(names);
+            Assert.That(style.Count, Is.EqualTo(3));
+            Assert.That(style.Find(f => f.Name == "bn/fem").Test, Does.Contain("bn_neg_wb_fem_001"));
+            Assert.That(CrossValidation.FileFolds(names)[0].Test, Is.EquivalentTo(CrossValidation.FileFolds(names)[0].Test), "seeded");
+        }
+    }
+
+    public class PhaseMapTrainingTests
+    {
+        [Test]
+        public void LearnsTheStanceShareAndTheRightFootsOffsetFromTheLabels()
+        {
+            // The generated subjects walk with their own stance share (0.60-0.64); the learned map must sit inside that range.
+            var map = PhaseMapTraining.Learn(TestData.Training);
+            Assert.That(map.Onset(GaitPhase.InitialSwing), Is.InRange(0.59, 0.65));
+            Assert.That(map.RightOffset, Is.EqualTo(0.5).Within(0.02));
+            // Perry's proportions inside stance: loading response ends at 12/62 of it.
+            Assert.That(map.Onset(GaitPhase.MidStance) / map.Onset(GaitPhase.InitialSwing), Is.EqualTo(12.0 / 62).Within(1e-9));
+        }
+
+        [Test]
+        public void WithoutWalkingItKeepsPerrysMap()
+        {
+            var standing = WalkingStreamGenerator.Generate("s", GaitSubject.Random(1), new StreamScript().Stand(10), 1);
+            Assert.That(PhaseMapTraining.Learn(new[] { standing }).Serialize(), Is.EqualTo(PhaseMap.Perry.Serialize()));
+        }
+    }
+
+    public class WindowDatasetTests
+    {
+        [Test]
+        public void ExportsTheLiveWindowsWithTheLabelsAtTheirNewestSample()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "headgait-export-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var rec = TestData.Eval("start_stop");
+                var features = WindowFeatures.Parse("samples:50 step:2 channels:smv,lateral");
+                var segments = new StrideSegments(TestData.Map);
+                var summary = WindowDataset.Export(new[] { new WindowDataset.Item { Recording = rec, FileIndex = 0 } }, new[] { rec.Name },
+                    features, segments, 4, dir);
+                long windows = 0;
+                var pre = new StreamPreprocessor();
+                foreach (var s in rec.Samples) pre.Push(s.Imu, w => windows++);
+                Assert.That(summary.Windows, Is.EqualTo((windows + 3) / 4));
+                Assert.That(summary.PerClass[segments.StandingClass], Is.GreaterThan(100));
+                var x = File.ReadAllBytes(Path.Combine(dir, "X.npy"));
+                Assert.That(x.Length, Is.EqualTo(128 + summary.Windows * features.Width * 4), "npy header + float32 data");
+                string header = System.Text.Encoding.ASCII.GetString(x, 10, 118);
+                Assert.That(header, Does.Contain($"'shape': ({summary.Windows}, 25, 2)"));
+                Assert.That(File.ReadAllText(Path.Combine(dir, "dataset.txt")), Does.Contain("classes=" + segments.Names()));
+            }
+            finally
+            {
+                if (Directory.Exists(dir)) Directory.Delete(dir, true);
+            }
+        }
+    }
+}

@@ -1,0 +1,92 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.IO;
+using System.Linq;
+using HeadGait.Training;
+
+namespace HeadGait.Cli
+{
+    /// <summary>
+    /// headgait benchmark: cross-validation on labelled recordings. THR and COR are trained inside each fold here;
+    /// SVM and BLSTM are read from the fold models `headgait train --cv` wrote (MODELS/cv/SCHEME/FOLD/).
+    /// </summary>
+    static class BenchmarkCommand
+    {
+        public static Command Build()
+        {
+            var data = new Option<string[]>("--data") { Description = "labelled CSV recordings or folders of them (e.g. ../shared/data/real-train)", Required = true, AllowMultipleArgumentsPerToken = true };
+            var models = new Option<string>("--models") { Description = "model folder whose cv/ holds the SVM and BLSTM fold models (default: the package's Models/)" };
+            var cv = new Option<string>("--cv") { Description = "cross-validation: style (leave one style out), file (5 folds of files) or style,file", DefaultValueFactory = _ => "style,file" };
+            var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a comma-separated list or all", DefaultValueFactory = _ => "all" };
+            var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
+            var perFold = new Option<bool>("--per-fold") { Description = "also print each fold's rows" };
+            var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
+            {
+                data, models, cv, classifier, augment, perFold,
+            };
+            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold)));
+            return command;
+        }
+
+        static int Run(string[] data, string modelFolder, string schemes, string classifierList, int augment, bool perFold)
+        {
+            var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
+            if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
+            string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
+            var names = Classifiers.Parse(classifierList);
+            var byName = recordings.ToDictionary(r => r.Name);
+            Console.WriteLine($"HeadGait benchmark: {recordings.Count} labelled recordings from {string.Join(", ", data)}");
+            foreach (var scheme in schemes.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+            {
+                var folds = CrossValidation.Make(scheme, byName.Keys);
+                var pooled = names.ToDictionary(n => n, n => new List<ReplayResult>());
+                var foldRows = new List<(string fold, string clf, List<ReplayResult> results)>();
+                var missing = new List<string>();
+                foreach (var fold in folds)
+                {
+                    var test = fold.Test.Select(n => byName[n]).ToList();
+                    var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
+                    if (train.Count == 0 || test.Count == 0) continue;
+                    var map = PhaseMapTraining.Learn(train);
+                    var augmented = names.Contains("thr") || names.Contains("cor") ? GaitTraining.WithAugmentation(train, augment) : train;
+                    var foldModels = new GaitModels();
+                    var gate = names.Contains("thr") || names.Contains("cor") ? GaitTraining.TrainGate(augmented) : null;
+                    if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gate);
+                    if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gate);
+                    string learnedDir = Path.Combine(folder, "cv", scheme, TrainCommand.Safe(fold.Name));
+                    var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
+                    foldModels.Svm = learned?.Svm;
+                    foldModels.Blstm = learned?.Blstm;
+                    foreach (var name in names)
+                    {
+                        if ((name == "svm" && foldModels.Svm == null) || (name == "blstm" && foldModels.Blstm == null))
+                        {
+                            missing.Add($"{name} {fold.Name}");
+                            continue;
+                        }
+                        var results = test.Select(r => ReplayEvaluator.Run(r, foldModels.Create(name, out _))).ToList();
+                        pooled[name].AddRange(results);
+                        foldRows.Add((fold.Name, results[0].Classifier, results));
+                    }
+                }
+                Console.WriteLine();
+                Console.WriteLine(scheme == CrossValidation.ByStyle
+                    ? $"Leave one style out ({folds.Count} folds: {string.Join(", ", folds.Select(f => f.Name))}); each style is scored by classifiers that never saw it"
+                    : $"Grouped {folds.Count}-fold cross-validation over files");
+                if (missing.Count > 0)
+                    Console.WriteLine($"not evaluated (no fold model under {Path.Combine(folder, "cv", scheme)}; run `headgait train --cv {scheme}`): {string.Join(", ", missing.Take(12))}{(missing.Count > 12 ? ", ..." : "")}");
+                Report.PhaseHeader();
+                if (perFold) foreach (var row in foldRows) Report.PhaseRow(row.fold, row.clf, row.results);
+                foreach (var name in names.Where(n => pooled[n].Count > 0)) Report.PhaseRow($"{scheme} CV pooled", pooled[name][0].Classifier, pooled[name]);
+                Console.WriteLine();
+                Report.StepHeader();
+                if (perFold) foreach (var row in foldRows) Report.StepRows(row.fold, row.clf, row.results);
+                foreach (var name in names.Where(n => pooled[n].Count > 0)) Report.StepRows($"{scheme} CV pooled", pooled[name][0].Classifier, pooled[name]);
+            }
+            Console.WriteLine();
+            Report.Legend();
+            return 0;
+        }
+    }
+}

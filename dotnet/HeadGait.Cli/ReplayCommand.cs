@@ -1,0 +1,109 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+
+namespace HeadGait.Cli
+{
+    /// <summary>headgait replay: recordings through the live pipeline with the trained classifiers.</summary>
+    static class ReplayCommand
+    {
+        public static Command Build()
+        {
+            var files = new Argument<string[]>("recordings") { Arity = ArgumentArity.ZeroOrMore, Description = "CSV recordings or folders of them (default: the package's generated sample recordings, Samples~/Recordings/eval)" };
+            var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a comma-separated list or all", DefaultValueFactory = _ => "all" };
+            var models = new Option<string>("--models") { Description = "folder of trained models (default: the package's Models/)" };
+            var trace = new Option<string>("--trace") { Description = "write each window's prediction and avatar frame as CSV into this folder" };
+            var strict = new Option<bool>("--strict") { Description = "reject a recording with any bad row instead of skipping the row" };
+            var command = new Command("replay", "Replays recordings sample by sample through preprocessing, a classifier and the animator, and scores them against their labels.")
+            {
+                files, classifier, models, trace, strict,
+            };
+            command.SetAction(parse => Run(parse.GetValue(files), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(trace), parse.GetValue(strict)));
+            return command;
+        }
+
+        static int Run(string[] files, string classifierList, string modelFolder, string traceDir, bool strict)
+        {
+            bool samples = files == null || files.Length == 0;
+            var paths = samples ? SamplePaths.List(SamplePaths.RequireRecordingsFolder(), "eval").ToList() : Inputs.Expand(files, "*.csv");
+            if (paths.Count == 0) throw new UsageException("no recordings to replay");
+            var recordings = Inputs.LoadRecordings(paths, strict);
+            string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
+            var models = Classifiers.Load(folder);
+            var names = Classifiers.Parse(classifierList);
+
+            Console.WriteLine(samples
+                ? $"HeadGait replay of the package's {recordings.Count} generated sample recordings (synthetic walkers, not people), models from {folder}"
+                : $"HeadGait replay of {recordings.Count} recording(s), models from {folder}");
+            foreach (var r in recordings.Where(r => r.Warnings.Count > 0))
+            {
+                Console.WriteLine($"{r.Name}: skipped {r.Warnings.Count} unreadable row(s):");
+                foreach (var w in r.Warnings.Take(5)) Console.WriteLine($"  {w}");
+            }
+            Console.WriteLine();
+
+            var results = new Dictionary<string, List<ReplayResult>>();
+            foreach (var name in names)
+            {
+                var list = new List<ReplayResult>();
+                foreach (var rec in recordings)
+                {
+                    var c = models.Create(name, out string warning);
+                    if (warning != null && rec == recordings[0]) Console.WriteLine($"warning: {warning}");
+                    var res = ReplayEvaluator.Run(rec, c, keepTrace: traceDir != null);
+                    list.Add(res);
+                    if (traceDir != null) WriteTrace(traceDir, name, res);
+                }
+                results[name] = list;
+            }
+            bool labelled = recordings.Any(r => r.HasTruth);
+            if (labelled)
+            {
+                Report.PhaseHeader();
+                foreach (var name in names)
+                    foreach (var r in results[name]) Report.PhaseRow(r.Recording, r.Classifier, new[] { r });
+                foreach (var name in names) Report.PhaseRow("ALL (pooled)", results[name][0].Classifier, results[name]);
+                Console.WriteLine();
+                Report.StepHeader();
+                foreach (var name in names) Report.StepRows("ALL (pooled)", results[name][0].Classifier, results[name]);
+                Console.WriteLine();
+                Report.Legend();
+            }
+            foreach (var name in names)
+            {
+                foreach (var r in results[name].Where(r => r.ClassifierMetrics == null && r.Windows > 0))
+                {
+                    var parts = Enum.GetValues(typeof(LocomotionState)).Cast<LocomotionState>()
+                        .Where(st => r.StateCounts.ContainsKey(st))
+                        .Select(st => $"{st} {100.0 * r.StateCounts[st] / r.Windows:F0}%");
+                    Console.WriteLine($"{r.Recording} ({r.Classifier}, no labels): avatar time in {string.Join(", ", parts)}");
+                }
+            }
+            if (samples)
+            {
+                Console.WriteLine("These recordings come from the package's own walking generator: they show the pipeline works end to end;");
+                Console.WriteLine("accuracy on people is measured by `headgait benchmark` on real recordings (see the README).");
+            }
+            return 0;
+        }
+
+        static void WriteTrace(string dir, string name, ReplayResult r)
+        {
+            Directory.CreateDirectory(dir);
+            string path = Path.Combine(dir, $"{r.Recording}.{name}.trace.csv");
+            using var w = new StreamWriter(path);
+            w.WriteLine("time_s,walking,stride_pos,pred_left,pred_right,confidence,state,anim_stride_pos,anim_left,anim_right,walk_weight");
+            for (int i = 0; i < r.Predictions.Count; i++)
+            {
+                var p = r.Predictions[i];
+                var f = r.Frames[i];
+                w.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0:F3},{1},{2:F4},{3},{4},{5:F3},{6},{7:F4},{8},{9},{10:F2}",
+                    p.Time, p.IsWalking ? 1 : 0, p.StridePosition, GaitPhases.ShortName(p.Left), GaitPhases.ShortName(p.Right), p.Confidence,
+                    f.State, f.StridePosition, GaitPhases.ShortName(f.Left), GaitPhases.ShortName(f.Right), f.WalkWeight));
+            }
+        }
+    }
+}

@@ -1,0 +1,137 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using HeadGait.Training;
+
+namespace HeadGait.Cli
+{
+    /// <summary>headgait train: all four classifiers from labelled recordings, into one model folder.</summary>
+    static class TrainCommand
+    {
+        /// <summary>What the learned classifiers read: 0.5 s at 50 Hz of SMV minus gravity, lateral and forward acceleration.</summary>
+        public const string DefaultFeatures = "samples:50 step:2 channels:smv,lateral,forward";
+
+        public static Command Build()
+        {
+            var data = new Option<string[]>("--data") { Description = "labelled CSV recordings or folders of them", Required = true, AllowMultipleArgumentsPerToken = true };
+            var output = new Option<string>("--out") { Description = "model folder (default: the package's Models/)" };
+            var augment = new Option<int>("--augment") { Description = "augmented copies per recording (time stretch, amplitude and axis scaling)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
+            var learned = new Option<string>("--learned") { Description = "learned classifiers to train with Python: svm,blstm, one of them, or none", DefaultValueFactory = _ => "svm,blstm" };
+            var cv = new Option<string>("--cv") { Description = "also train the learned classifiers per cross-validation fold (style, file or style,file) into OUT/cv/ for `headgait benchmark`" };
+            var features = new Option<string>("--features") { Description = "what the learned classifiers read", DefaultValueFactory = _ => DefaultFeatures };
+            var stride = new Option<int>("--stride") { Description = "export every n-th window for the learned classifiers", DefaultValueFactory = _ => 3 };
+            var work = new Option<string>("--work") { Description = "folder for the exported windows (default: a temporary folder)" };
+            var python = new Option<string>("--python") { Description = "Python with torch, scikit-learn and onnx", DefaultValueFactory = _ => "/usr/bin/python3" };
+            var exportOnly = new Option<bool>("--export-only") { Description = "export the learned classifiers' windows and stop (for experiments with training/train_learned.py)" };
+            var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
+            var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
+            {
+                data, output, augment, learned, cv, features, stride, work, python, pythonArgs, exportOnly,
+            };
+            command.SetAction(parse =>
+            {
+                string outDir = parse.GetValue(output) ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --out and no package Models/ folder found");
+                Directory.CreateDirectory(outDir);
+                var recordings = Inputs.LoadRecordings(Inputs.Expand(parse.GetValue(data), "*.csv"), false).Where(r => r.HasTruth).ToList();
+                if (recordings.Count == 0) throw new UsageException("no labelled recordings (phase_left/phase_right) in --data");
+                var training = GaitTraining.WithAugmentation(recordings, parse.GetValue(augment));
+                var map = PhaseMapTraining.Learn(recordings);
+                Console.WriteLine($"{recordings.Count} labelled recordings, {training.Count - recordings.Count} augmented copies; phase map {map.Serialize()}");
+
+                var gate = GaitTraining.TrainGate(training);
+                var thr = GaitTraining.TrainThreshold(training, map, gate);
+                thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
+                Console.WriteLine($"walking gate (log-odds weights on log spread of SMV, vertical, lateral, forward, SMV change; bias): {gate.Serialize()}");
+                Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms");
+                var cor = GaitTraining.TrainCorrelation(training, map, gate);
+                cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
+                Console.WriteLine($"COR: {cor.StepsUsed} steps; r > {cor.MinCorrelation:F2}, contact lag {1000 * cor.ContactLag:F0} ms");
+
+                string kinds = parse.GetValue(learned);
+                if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase)) return 0;
+                string workDir = parse.GetValue(work) ?? Path.Combine(Path.GetTempPath(), "headgait-train-windows");
+                var spec = WindowFeatures.Parse(parse.GetValue(features));
+                var names = recordings.Select(r => r.Name).ToList();
+                var index = names.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => p.i);
+                var items = training.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[OriginalName(r.Name)], Augmented = r.Name.Contains('~') }).ToList();
+                var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir);
+                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}; {summary.Unlabelled} have a label pair outside the stride segments and are not trained on");
+                if (parse.GetValue(exportOnly)) return 0;
+
+                string script = FindScript();
+                string py = parse.GetValue(python);
+                string extra = parse.GetValue(pythonArgs);
+                RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{outDir}\" --models {kinds} {extra}");
+                Verify(outDir);
+                foreach (var scheme in (parse.GetValue(cv) ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+                {
+                    foreach (var fold in CrossValidation.Make(scheme, names))
+                    {
+                        string foldDir = Path.Combine(outDir, "cv", scheme, Safe(fold.Name));
+                        Directory.CreateDirectory(foldDir);
+                        string exclude = Path.Combine(foldDir, "test-recordings.txt");
+                        File.WriteAllLines(exclude, fold.Test.OrderBy(n => n, StringComparer.Ordinal));
+                        Console.WriteLine($"fold {scheme}/{fold.Name}: {fold.Test.Count} held-out recordings");
+                        RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{foldDir}\" --models {kinds} --exclude \"{exclude}\" --no-onnx {extra}");
+                    }
+                }
+                return 0;
+            });
+            return command;
+        }
+
+        /// <summary>Augmented copies are named "original~...": they belong to their original's fold.</summary>
+        public static string OriginalName(string name)
+        {
+            int tilde = name.IndexOf('~');
+            return tilde < 0 ? name : name.Substring(0, tilde);
+        }
+
+        public static string Safe(string foldName) => foldName.Replace('/', '_');
+
+        static string FindScript()
+        {
+            foreach (var start in new[] { Directory.GetCurrentDirectory(), AppContext.BaseDirectory })
+            {
+                for (var dir = new DirectoryInfo(start); dir != null; dir = dir.Parent)
+                {
+                    string candidate = Path.Combine(dir.FullName, "training", "train_learned.py");
+                    if (File.Exists(candidate)) return candidate;
+                }
+            }
+            throw new UsageException("training/train_learned.py not found above the working directory");
+        }
+
+        static void RunPython(string python, string arguments)
+        {
+            var info = new ProcessStartInfo(python, arguments) { UseShellExecute = false };
+            Process process;
+            try
+            {
+                process = Process.Start(info);
+            }
+            catch (System.ComponentModel.Win32Exception e)
+            {
+                throw new InvalidOperationException($"cannot start {python} ({e.Message}); install python3-torch python3-sklearn python3-onnx with apt, or pass --python");
+            }
+            process.WaitForExit();
+            if (process.ExitCode != 0) throw new InvalidOperationException($"{python} {arguments} failed with exit code {process.ExitCode}");
+        }
+
+        /// <summary>The package's C# forward passes must reproduce what the training framework computed for the reference windows.</summary>
+        static void Verify(string folder)
+        {
+            foreach (var file in new[] { GaitModels.SvmFile, GaitModels.BlstmFile })
+            {
+                string path = Path.Combine(folder, file), refPath = ReferenceCheck.ReferencePath(path);
+                if (!File.Exists(path) || !File.Exists(refPath)) continue;
+                double diff = ReferenceCheck.MaxDifference(ModelFile.Load(path), ModelFile.Load(refPath));
+                Console.WriteLine($"{file}: C# forward pass vs the training framework on the reference windows: max |difference| {diff:G3}");
+                if (!(diff <= 1e-5)) throw new InvalidOperationException($"{path}: the C# forward pass differs from the training framework by {diff:G3} (limit 1e-5)");
+            }
+        }
+    }
+}
