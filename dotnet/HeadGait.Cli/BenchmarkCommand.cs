@@ -60,7 +60,7 @@ namespace HeadGait.Cli
                     foldModels.Blstm = learned?.Blstm;
                     foreach (var name in names)
                     {
-                        if ((name == "svm" && foldModels.Svm == null) || (name == "blstm" && foldModels.Blstm == null))
+                        if ((name.StartsWith("svm") && foldModels.Svm == null) || (name.StartsWith("blstm") && foldModels.Blstm == null))
                         {
                             missing.Add($"{name} {fold.Name}");
                             continue;

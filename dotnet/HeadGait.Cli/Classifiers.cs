@@ -13,8 +13,8 @@ namespace HeadGait.Cli
             foreach (var part in (list ?? "all").ToLowerInvariant().Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
             {
                 if (part == "all") names.AddRange(GaitModels.Names);
-                else if (GaitModels.Names.Contains(part)) names.Add(part);
-                else throw new UsageException($"unknown classifier '{part}' (thr, cor, svm, blstm or all)");
+                else if (GaitModels.Names.Contains(part) || part == "svm-raw" || part == "blstm-raw") names.Add(part);
+                else throw new UsageException($"unknown classifier '{part}' (thr, cor, svm, blstm, all; svm-raw, blstm-raw: without the time filter)");
             }
             return names.Distinct().ToList();
         }

@@ -16,6 +16,7 @@ namespace HeadGait.Cli
                 TrainCommand.Build(),
                 FromBvhCommand.Build(),
                 GenerateCommand.Build(),
+                UnityMetaCommand.Build(),
             };
             try
             {

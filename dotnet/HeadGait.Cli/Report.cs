@@ -11,8 +11,8 @@ namespace HeadGait.Cli
         static string F(double v, string fmt) => double.IsNaN(v) ? "-" : v.ToString(fmt, CultureInfo.InvariantCulture);
         static string P(double v) => F(100 * v, "F1");
 
-        const string PhaseFormat = "{0,-20} {1,-5} {2,6} {3,6} {4,6} {5,6} {6,5} {7,5} {8,5} {9,8} {10,8} {11,7} {12,5}";
-        const string StepFormat = "{0,-20} {1,-5} {2,-6} {3,7} {4,6} {5,6} {6,6} {7,6} {8,6} {9,6} {10,6}";
+        const string PhaseFormat = "{0,-20} {1,-9} {2,6} {3,6} {4,6} {5,6} {6,5} {7,5} {8,5} {9,8} {10,8} {11,7} {12,5}";
+        const string StepFormat = "{0,-20} {1,-9} {2,-6} {3,7} {4,6} {5,6} {6,6} {7,6} {8,6} {9,6} {10,6}";
 
         public static void PhaseHeader()
         {

@@ -1,5 +1,5 @@
 // Stand-ins for the parts of the UnityEngine / UnityEditor API that the package's Unity layer uses, so that
-// Runtime/Unity and Editor compile (and the axis conversions can be tested) with the plain .NET SDK.
+// Runtime/Components and Editor compile (and the axis conversions can be tested) with the plain .NET SDK.
 // Only signatures the package calls are here, written after Unity 2021.3's documented API. This proves the
 // package's own C# is well-formed; it does not prove Unity's API behaves as stubbed. Math is real where tests use it.
 using System;

@@ -71,7 +71,7 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// A fresh classifier of the given name (thr, cor, svm, blstm). When its file is unusable, the next simpler one that
+        /// A fresh classifier of the given name (thr, cor, svm, blstm; svm-raw and blstm-raw without the time filter). When its file is unusable, the next simpler one that
         /// is available is made instead and <paramref name="warning"/> says so; otherwise the warning is null.
         /// </summary>
         public IGaitClassifier Create(string name, out string warning)
@@ -80,11 +80,13 @@ namespace HeadGait
             switch ((name ?? "").ToLowerInvariant())
             {
                 case "blstm":
-                    if (Blstm != null) return new BlstmClassifier(Blstm);
+                case "blstm-raw":
+                    if (Blstm != null) return new BlstmClassifier(Blstm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : new PhaseFilterSettings());
                     warning = $"BLSTM model unusable ({Describe(BlstmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "svm":
-                    if (Svm != null) return new SvmClassifier(Svm);
+                case "svm-raw":
+                    if (Svm != null) return new SvmClassifier(Svm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : new PhaseFilterSettings());
                     warning = $"SVM model unusable ({Describe(SvmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "cor":

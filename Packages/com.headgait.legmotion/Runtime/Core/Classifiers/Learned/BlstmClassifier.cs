@@ -17,7 +17,11 @@ namespace HeadGait
         readonly double[] fcW, fcB;           // [K x 2H], [K]
         readonly double[] h, c, gates, joined;
 
-        public BlstmClassifier(ModelFile model) : base(model, Kind)
+        /// <summary>The BLSTM with the time filter (<see cref="PhaseSequenceFilter"/>).</summary>
+        public BlstmClassifier(ModelFile model) : this(model, new PhaseFilterSettings()) { }
+
+        /// <summary>With the given time filter, or none (null): the network's own per-window answers, as the paper's classifier.</summary>
+        public BlstmClassifier(ModelFile model, PhaseFilterSettings filter) : base(model, Kind, filter)
         {
             var shape = model.ShapeOf("lstm_w_hh");
             if (shape.Length != 3 || shape[0] != 2 || shape[1] != 4 * shape[2] || shape[2] < 1 || shape[2] > 1024)
@@ -48,7 +52,7 @@ namespace HeadGait
 
         public BlstmClassifier(string path) : this(ModelFile.Load(path)) { }
 
-        public override string Name => "BLSTM";
+        public override string Name => Filter == null ? "BLSTM-raw" : "BLSTM";
         public int Hidden => hidden;
 
         static double[] Slice(double[] all, int index, int length)

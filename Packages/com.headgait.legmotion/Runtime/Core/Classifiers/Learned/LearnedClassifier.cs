@@ -5,9 +5,10 @@ namespace HeadGait
 {
     /// <summary>
     /// Shared part of the learned classifiers (SVM, BLSTM): reads the features a model file names, standardises them,
-    /// lets the model score each class (a stride segment naming both feet's phases, or Standing) and turns the best
-    /// class into a prediction. Its stride position is the segment's, nudged towards the runner-up neighbour; its step
-    /// period comes from the time between predicted foot contacts.
+    /// lets the model score each class (a stride segment naming both feet's phases, or Standing), turns the scores into
+    /// probabilities, filters them over time with the gait's order (<see cref="PhaseSequenceFilter"/>, unless turned off)
+    /// and reports the most likely class. Its stride position is the segment's, nudged towards the likelier neighbour;
+    /// its step period comes from the time between predicted foot contacts.
     /// </summary>
     public abstract class LearnedClassifier : IGaitClassifier
     {
@@ -15,11 +16,14 @@ namespace HeadGait
         readonly double[] inputScale;
         readonly double[] features;
         readonly double[] scores;
+        readonly double[] probabilities;
+        readonly PhaseSequenceFilter filter;
         int lastClass = -1;
+        double lastTime = double.NaN;
         double lastContactTime = double.NaN;
         double stepPeriod;
 
-        protected LearnedClassifier(ModelFile model, string kind)
+        protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
             if (model == null) throw new ArgumentNullException(nameof(model));
             Source = model.Source;
@@ -44,6 +48,8 @@ namespace HeadGait
                 if (!(s > 0)) throw new ModelFormatException(model.Source, "input_scale must be positive");
             features = new double[Features.Width];
             scores = new double[Segments.ClassCount];
+            probabilities = new double[Segments.ClassCount];
+            filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
             stepPeriod = DefaultStepPeriod;
         }
 
@@ -63,8 +69,16 @@ namespace HeadGait
         /// <summary>Scores every class from standardised features ([time][channel]); higher is more likely.</summary>
         protected abstract void Score(double[] standardised, double[] classScores);
 
+        /// <summary>The scores as probabilities over the classes (the BLSTM's already are).</summary>
+        protected virtual void ToProbabilities(double[] classScores, double[] p) => Array.Copy(classScores, p, p.Length);
+
+        /// <summary>The time filter, or null when the raw per-window classes are reported.</summary>
+        public PhaseSequenceFilter Filter => filter;
+
         public virtual void Reset()
         {
+            filter?.Reset();
+            lastTime = double.NaN;
             lastClass = -1;
             lastContactTime = double.NaN;
             stepPeriod = DefaultStepPeriod;
@@ -90,24 +104,37 @@ namespace HeadGait
         public GaitPrediction Classify(SignalWindow window)
         {
             Score(Standardise(window), scores);
-            int best = 0;
-            for (int k = 1; k < scores.Length; k++)
-                if (scores[k] > scores[best]) best = k;
+            ToProbabilities(scores, probabilities);
             double now = window.EndTime;
+            double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / window.SampleRate : Math.Min(0.25, now - lastTime);
+            lastTime = now;
+            var p = probabilities;
+            int best;
+            if (filter != null)
+            {
+                best = filter.Update(probabilities, dt, stepPeriod);
+                p = filter.Belief;
+            }
+            else
+            {
+                best = 0;
+                for (int k = 1; k < p.Length; k++)
+                    if (p[k] > p[best]) best = k;
+            }
             if (best == Segments.StandingClass)
             {
                 lastClass = best;
                 lastContactTime = double.NaN;
-                return GaitPrediction.Standing(now, scores[best]);
+                return GaitPrediction.Standing(now, p[best]);
             }
             TrackContacts(best, now);
             lastClass = best;
             // Within the segment, lean towards whichever neighbour scores higher.
             int n = Segments.Count;
-            double before = scores[(best + n - 1) % n], after = scores[(best + 1) % n];
-            double lean = (after - before) / (Math.Abs(scores[best]) + Math.Abs(before) + Math.Abs(after) + 1e-12);
+            double before = p[(best + n - 1) % n], after = p[(best + 1) % n];
+            double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
-            return GaitPrediction.Walking(now, s, stepPeriod, scores[best], Segments.Left(best), Segments.Right(best));
+            return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
 
         /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>

@@ -21,7 +21,11 @@ namespace HeadGait
         readonly double[] kernel;
         readonly double[] decision;
 
-        public SvmClassifier(ModelFile model) : base(model, Kind)
+        /// <summary>The SVM with the time filter (<see cref="PhaseSequenceFilter"/>).</summary>
+        public SvmClassifier(ModelFile model) : this(model, new PhaseFilterSettings()) { }
+
+        /// <summary>With the given time filter, or none (null): the SVM's own per-window votes decide, as the paper's classifier.</summary>
+        public SvmClassifier(ModelFile model, PhaseFilterSettings filter) : base(model, Kind, filter)
         {
             classes = Segments.ClassCount;
             width = Features.Width;
@@ -50,7 +54,19 @@ namespace HeadGait
 
         public SvmClassifier(string path) : this(ModelFile.Load(path)) { }
 
-        public override string Name => "SVM";
+        /// <summary>
+        /// Votes as probabilities for the time filter: each vote multiplies a class's odds by e (softmax of the votes). One-
+        /// versus-one votes are not calibrated probabilities; this keeps their order and lets a clear winner dominate.
+        /// </summary>
+        protected override void ToProbabilities(double[] votes, double[] p)
+        {
+            double max = double.NegativeInfinity, sum = 0;
+            foreach (var v in votes) max = Math.Max(max, v);
+            for (int k = 0; k < votes.Length; k++) sum += p[k] = Math.Exp(votes[k] - max);
+            for (int k = 0; k < votes.Length; k++) p[k] /= sum;
+        }
+
+        public override string Name => Filter == null ? "SVM-raw" : "SVM";
         public int SupportVectors => vectors;
 
         /// <summary>Pairwise decision values of the last window, in LIBSVM's order (0 vs 1, 0 vs 2, ..., K-2 vs K-1).</summary>

@@ -5,8 +5,8 @@ using UnityEngine;
 namespace HeadGait.Tests
 {
     /// <summary>
-    /// Runs against the UnityEngine stand-ins in dotnet/UnityStubs (real quaternion math, Unity's Euler order),
-    /// so it checks the package's axis conventions, not Unity itself.
+    /// The package's axis conventions. In Unity it runs against the engine; under `dotnet test` against the stand-ins in
+    /// dotnet/UnityStubs (real quaternion math, Unity's Euler order).
     /// </summary>
     public class HeadAxesTests
     {

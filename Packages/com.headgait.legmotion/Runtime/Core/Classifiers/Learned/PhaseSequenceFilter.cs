@@ -1,0 +1,96 @@
+using System;
+
+namespace HeadGait
+{
+    public sealed class PhaseFilterSettings
+    {
+        /// <summary>Chance per window that walking starts or stops (the classifier's evidence has to overcome it).</summary>
+        public double StartProbability = 0.01, StopProbability = 0.01;
+
+        /// <summary>Chance per window of skipping a segment (segments as short as IC last about two windows).</summary>
+        public double SkipProbability = 0.02;
+
+        /// <summary>Share of time the prior expects standing; the classifier's probabilities are divided by their priors.</summary>
+        public double StandingPrior = 0.1;
+
+        /// <summary>How much the model's evidence counts against the gait model (1 = as probabilities; lower trusts the sequence more).</summary>
+        public double EvidenceWeight = 1.0;
+    }
+
+    /// <summary>
+    /// Online (forward) filtering of a learned classifier's per-window class probabilities over the stride's segments:
+    /// a walking foot moves forward through the segments, staying in each for as long as its share of the stride at the
+    /// current step period, and walking starts or stops only now and then. A window whose classifier jumps half a stride or
+    /// flickers to standing is outvoted by the windows around it, without delaying a steady prediction. Allocation-free.
+    /// </summary>
+    public sealed class PhaseSequenceFilter
+    {
+        readonly StrideSegments segments;
+        readonly PhaseFilterSettings settings;
+        readonly double[] belief, predicted, prior;
+        bool started;
+
+        public PhaseSequenceFilter(StrideSegments segments, PhaseFilterSettings settings = null)
+        {
+            this.segments = segments ?? throw new ArgumentNullException(nameof(segments));
+            this.settings = settings ?? new PhaseFilterSettings();
+            int n = segments.ClassCount;
+            belief = new double[n];
+            predicted = new double[n];
+            prior = new double[n];
+            for (int k = 0; k < segments.Count; k++) prior[k] = (1 - this.settings.StandingPrior) * segments.Length(k);
+            prior[segments.StandingClass] = this.settings.StandingPrior;
+        }
+
+        /// <summary>The filtered class probabilities after the last update.</summary>
+        public double[] Belief => belief;
+
+        public void Reset() => started = false;
+
+        /// <summary>
+        /// Advances the belief by one window of <paramref name="dt"/> seconds at the given step period and folds in the
+        /// classifier's probabilities; returns the most likely class.
+        /// </summary>
+        public int Update(double[] probabilities, double dt, double stepPeriod)
+        {
+            int n = segments.Count, standing = segments.StandingClass;
+            var s = settings;
+            if (!started)
+            {
+                for (int k = 0; k <= n; k++) predicted[k] = prior[k];
+                started = true;
+            }
+            else
+            {
+                Array.Clear(predicted, 0, n + 1);
+                double stride = 2 * Math.Max(0.2, stepPeriod);
+                for (int k = 0; k < n; k++)
+                {
+                    // Leaving a segment takes its expected duration; a share of the leavers skips the next one.
+                    double leave = Math.Min(1, Math.Max(0, dt / (segments.Length(k) * stride)));
+                    double b = belief[k] * (1 - s.StopProbability);
+                    predicted[k] += b * (1 - leave);
+                    predicted[(k + 1) % n] += b * leave * (1 - s.SkipProbability);
+                    predicted[(k + 2) % n] += b * leave * s.SkipProbability;
+                    predicted[standing] += belief[k] * s.StopProbability;
+                }
+                predicted[standing] += belief[standing] * (1 - s.StartProbability);
+                for (int k = 0; k < n; k++) predicted[k] += belief[standing] * s.StartProbability * segments.Length(k);
+            }
+            double total = 0;
+            for (int k = 0; k <= n; k++)
+            {
+                double evidence = Math.Pow(Math.Max(probabilities[k], 1e-9) / prior[k], s.EvidenceWeight);
+                belief[k] = predicted[k] * evidence;
+                total += belief[k];
+            }
+            int best = 0;
+            for (int k = 0; k <= n; k++)
+            {
+                belief[k] = total > 0 ? belief[k] / total : 1.0 / (n + 1);
+                if (belief[k] > belief[best]) best = k;
+            }
+            return best;
+        }
+    }
+}

@@ -1,0 +1,163 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Text.RegularExpressions;
+
+namespace HeadGait.Tooling
+{
+    /// <summary>
+    /// The .meta files Unity needs beside every file and folder it imports (a package read from git or a registry is
+    /// immutable: an asset without a committed .meta is ignored, and scenes and prefabs find scripts by the GUID in it).
+    /// Lists what needs one, writes missing ones with a fresh GUID and the importer Unity uses for the file type, and
+    /// checks a tree for missing, orphaned, malformed and duplicate-GUID .meta files.
+    /// </summary>
+    public static class UnityMeta
+    {
+        static readonly Regex GuidLine = new Regex(@"^guid: ([0-9a-f]{32})\s*$", RegexOptions.Multiline);
+
+        /// <summary>
+        /// Files and folders under <paramref name="root"/> that Unity imports: everything except hidden entries (names
+        /// starting with '.'), folders ending in '~' and what they hold, and .meta files themselves.
+        /// </summary>
+        public static List<string> ImportedEntries(string root)
+        {
+            var list = new List<string>();
+            Walk(root, list);
+            list.Sort(StringComparer.Ordinal);
+            return list;
+        }
+
+        static void Walk(string dir, List<string> list)
+        {
+            foreach (var d in Directory.GetDirectories(dir))
+            {
+                string name = Path.GetFileName(d);
+                if (Ignored(name) || name.EndsWith("~", StringComparison.Ordinal)) continue;
+                list.Add(d);
+                Walk(d, list);
+            }
+            foreach (var f in Directory.GetFiles(dir))
+            {
+                string name = Path.GetFileName(f);
+                if (Ignored(name) || name.EndsWith(".meta", StringComparison.Ordinal)) continue;
+                list.Add(f);
+            }
+        }
+
+        static bool InHiddenFolder(string root, string path)
+        {
+            foreach (var part in path.Substring(root.Length).Split(new[] { Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar }, StringSplitOptions.RemoveEmptyEntries))
+                if (Ignored(part) || part.EndsWith("~", StringComparison.Ordinal)) return true;
+            return false;
+        }
+
+        static bool Ignored(string name) => name.StartsWith(".", StringComparison.Ordinal) || name == "bin" || name == "obj";
+
+        /// <summary>The importer Unity assigns to an entry, by type.</summary>
+        public static string ImporterFor(string path)
+        {
+            if (Directory.Exists(path)) return "DefaultImporter";
+            string name = Path.GetFileName(path);
+            switch (Path.GetExtension(name).ToLowerInvariant())
+            {
+                case ".cs": return "MonoImporter";
+                case ".asmdef":
+                case ".asmref": return "AssemblyDefinitionImporter";
+                case ".json": return name == "package.json" ? "PackageManifestImporter" : "TextScriptImporter";
+                case ".md":
+                case ".txt":
+                case ".bytes":
+                case ".csv":
+                case ".xml":
+                case ".html":
+                case ".yaml": return "TextScriptImporter";
+                case ".png": return "TextureImporter";
+                // .onnx is claimed by Sentis' scripted importer when it is installed; without it Unity keeps the file as is.
+                default: return "DefaultImporter";
+            }
+        }
+
+        /// <summary>A new .meta's text for the entry, with the given GUID (32 lower-case hex digits).</summary>
+        public static string Text(string path, string guid)
+        {
+            string importer = ImporterFor(path);
+            var lines = new List<string> { "fileFormatVersion: 2", "guid: " + guid };
+            if (Directory.Exists(path)) lines.Add("folderAsset: yes");
+            lines.Add(importer + ":");
+            lines.Add("  externalObjects: {}");
+            if (importer == "MonoImporter")
+            {
+                lines.Add("  serializedVersion: 2");
+                lines.Add("  defaultReferences: []");
+                lines.Add("  executionOrder: 0");
+                lines.Add("  icon: {instanceID: 0}");
+            }
+            lines.Add("  userData: ");
+            lines.Add("  assetBundleName: ");
+            lines.Add("  assetBundleVariant: ");
+            return string.Join("\n", lines) + "\n";
+        }
+
+        /// <summary>Writes a .meta for every imported entry that lacks one; returns the paths written.</summary>
+        public static List<string> WriteMissing(string root)
+        {
+            var written = new List<string>();
+            foreach (var entry in ImportedEntries(root))
+            {
+                string meta = entry + ".meta";
+                if (File.Exists(meta)) continue;
+                File.WriteAllText(meta, Text(entry, Guid.NewGuid().ToString("N")));
+                written.Add(meta);
+            }
+            return written;
+        }
+
+        /// <summary>The GUID a .meta file declares, or null when it has none.</summary>
+        public static string GuidOf(string metaPath)
+        {
+            var m = GuidLine.Match(File.ReadAllText(metaPath).Replace("\r\n", "\n"));
+            return m.Success ? m.Groups[1].Value : null;
+        }
+
+        /// <summary>Every problem with the .meta files under the roots (one line each), or none.</summary>
+        public static List<string> Problems(params string[] roots)
+        {
+            var problems = new List<string>();
+            var guids = new Dictionary<string, string>();
+            foreach (var root in roots)
+            {
+                var entries = new HashSet<string>(ImportedEntries(root));
+                foreach (var entry in entries)
+                {
+                    string meta = entry + ".meta";
+                    if (!File.Exists(meta))
+                    {
+                        problems.Add($"{entry}: no .meta");
+                        continue;
+                    }
+                    string text = File.ReadAllText(meta).Replace("\r\n", "\n");
+                    string guid = GuidOf(meta);
+                    if (!text.StartsWith("fileFormatVersion: 2\n", StringComparison.Ordinal) || guid == null)
+                    {
+                        problems.Add($"{meta}: not a Unity .meta (needs 'fileFormatVersion: 2' and a 32-digit guid)");
+                        continue;
+                    }
+                    if (guids.TryGetValue(guid, out var other)) problems.Add($"{meta}: guid {guid} repeats {other}");
+                    else guids[guid] = meta;
+                    string importer = ImporterFor(entry);
+                    if (!Regex.IsMatch(text, "^" + importer + ":", RegexOptions.Multiline)) problems.Add($"{meta}: expected the {importer}");
+                    if (Directory.Exists(entry) != text.Contains("\nfolderAsset: yes\n")) problems.Add($"{meta}: folderAsset does not match what {Path.GetFileName(entry)} is");
+                }
+                // Folders ending in '~' are not imported, but samples keep their .meta files there so that references survive
+                // the copy into Assets: only the imported part of the tree is checked for orphans.
+                foreach (var meta in Directory.GetFiles(root, "*.meta", SearchOption.AllDirectories))
+                {
+                    string entry = meta.Substring(0, meta.Length - ".meta".Length);
+                    if (InHiddenFolder(root, entry)) continue;
+                    if (!entries.Contains(entry)) problems.Add($"{meta}: orphaned (no {Path.GetFileName(entry)} beside it)");
+                }
+            }
+            return problems;
+        }
+    }
+}
