@@ -17,7 +17,7 @@ namespace HeadGait.Cli
         {
             var data = new Option<string[]>("--data") { Description = "labelled CSV recordings or folders of them (e.g. ../shared/data/real-train)", Required = true, AllowMultipleArgumentsPerToken = true };
             var models = new Option<string>("--models") { Description = "model folder whose cv/ holds the SVM and BLSTM fold models (default: the package's Models/)" };
-            var cv = new Option<string>("--cv") { Description = "cross-validation: style (leave one style out), file (5 folds of files) or style,file", DefaultValueFactory = _ => "style,file" };
+            var cv = new Option<string>("--cv") { Description = "cross-validation: style (leave one style out), file (5 folds of files), style,file, or none (cost only)", DefaultValueFactory = _ => "style,file" };
             var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a comma-separated list or all", DefaultValueFactory = _ => "all" };
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
             var perFold = new Option<bool>("--per-fold") { Description = "also print each fold's rows" };
@@ -39,6 +39,7 @@ namespace HeadGait.Cli
             Console.WriteLine($"HeadGait benchmark: {recordings.Count} labelled recordings from {string.Join(", ", data)}");
             foreach (var scheme in schemes.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
             {
+                if (scheme == "none") continue;
                 var folds = CrossValidation.Make(scheme, byName.Keys);
                 var pooled = names.ToDictionary(n => n, n => new List<ReplayResult>());
                 var foldRows = new List<(string fold, string clf, List<ReplayResult> results)>();
@@ -86,7 +87,32 @@ namespace HeadGait.Cli
             }
             Console.WriteLine();
             Report.Legend();
+            Console.WriteLine();
+            PrintCost(folder, names, recordings);
             return 0;
+        }
+
+        /// <summary>CPU time and allocation of each classifier with the models in the folder, on walking recordings.</summary>
+        static void PrintCost(string folder, List<string> names, List<Recording> recordings)
+        {
+            var models = GaitModels.Load(folder);
+            var walking = recordings.Where(r => r.Samples.Count > 300 && r.Samples.All(s => !s.HasTruth || s.Left != GaitPhase.Standing)).Take(40).ToList();
+            if (walking.Count < 2) return;
+            Console.WriteLine($"Cost on this machine ({Environment.ProcessorCount} cores), models from {folder}, {walking.Count - 1} walking recordings after one to warm up:");
+            Console.WriteLine($"{"clf",-9} {"ms/win",8} {"p95_ms",8} {"us/sample",9} {"bytes/sample",12}");
+            foreach (var name in names)
+            {
+                var c = models.Create(name, out string warning);
+                if (warning != null)
+                {
+                    Console.WriteLine($"{name,-9} not measured: {warning}");
+                    continue;
+                }
+                var cost = CostProbe.Measure(c, walking);
+                Console.WriteLine(string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0,-9} {1,8:F4} {2,8:F4} {3,9:F1} {4,12:F2}",
+                    cost.Classifier, cost.MeanWindowMs, cost.P95WindowMs, cost.MicrosecondsPerSample, cost.BytesPerSample));
+            }
+            Console.WriteLine("ms/win = classifier per window; us/sample = whole pipeline per input sample; bytes/sample = managed allocation in steady state.");
         }
     }
 }

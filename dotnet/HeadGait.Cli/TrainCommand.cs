@@ -14,6 +14,9 @@ namespace HeadGait.Cli
         /// <summary>What the learned classifiers read: 0.5 s at 50 Hz of SMV minus gravity, lateral and forward acceleration.</summary>
         public const string DefaultFeatures = "samples:50 step:2 channels:smv,lateral,forward";
 
+        /// <summary>Labels 0 s ahead of the window until cross-validation says otherwise.</summary>
+        public const double DefaultLabelLead = 0;
+
         public static Command Build()
         {
             var data = new Option<string[]>("--data") { Description = "labelled CSV recordings or folders of them", Required = true, AllowMultipleArgumentsPerToken = true };
@@ -23,13 +26,14 @@ namespace HeadGait.Cli
             var cv = new Option<string>("--cv") { Description = "also train the learned classifiers per cross-validation fold (style, file or style,file) into OUT/cv/ for `headgait benchmark`" };
             var features = new Option<string>("--features") { Description = "what the learned classifiers read", DefaultValueFactory = _ => DefaultFeatures };
             var stride = new Option<int>("--stride") { Description = "export every n-th window for the learned classifiers", DefaultValueFactory = _ => 3 };
+            var lead = new Option<double>("--label-lead") { Description = "seconds ahead of each window's newest sample whose labels the learned classifiers are trained on", DefaultValueFactory = _ => DefaultLabelLead };
             var work = new Option<string>("--work") { Description = "folder for the exported windows (default: a temporary folder)" };
             var python = new Option<string>("--python") { Description = "Python with torch, scikit-learn and onnx", DefaultValueFactory = _ => "/usr/bin/python3" };
             var exportOnly = new Option<bool>("--export-only") { Description = "export the learned classifiers' windows and stop (for experiments with training/train_learned.py)" };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
-                data, output, augment, learned, cv, features, stride, work, python, pythonArgs, exportOnly,
+                data, output, augment, learned, cv, features, stride, lead, work, python, pythonArgs, exportOnly,
             };
             command.SetAction(parse =>
             {
@@ -45,10 +49,10 @@ namespace HeadGait.Cli
                 var thr = GaitTraining.TrainThreshold(training, map, gate);
                 thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
                 Console.WriteLine($"walking gate (log-odds weights on log spread of SMV, vertical, lateral, forward, SMV change; bias): {gate.Serialize()}");
-                Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms");
+                Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
                 var cor = GaitTraining.TrainCorrelation(training, map, gate);
                 cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
-                Console.WriteLine($"COR: {cor.StepsUsed} steps; r > {cor.MinCorrelation:F2}, contact lag {1000 * cor.ContactLag:F0} ms");
+                Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms");
 
                 string kinds = parse.GetValue(learned);
                 if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase)) return 0;
@@ -57,7 +61,7 @@ namespace HeadGait.Cli
                 var names = recordings.Select(r => r.Name).ToList();
                 var index = names.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => p.i);
                 var items = training.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[OriginalName(r.Name)], Augmented = r.Name.Contains('~') }).ToList();
-                var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir);
+                var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir, parse.GetValue(lead));
                 Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}; {summary.Unlabelled} have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
 

@@ -16,7 +16,12 @@ namespace HeadGait.Tests
             Assert.That(t.PhaseMap.Onset(GaitPhase.InitialSwing), Is.EqualTo(0.62).Within(0.03));
             Assert.That(t.PhaseMap.RightOffset, Is.EqualTo(0.5).Within(0.02));
             Assert.That(t.MinCorrelation, Is.InRange(0.3, 0.95));
-            Assert.That(Math.Abs(t.ContactLag), Is.LessThan(0.1));
+            Assert.That(t.Templates.Count, Is.InRange(1, CorrelationTemplate.DefaultTemplateCount));
+            foreach (var s in t.Templates)
+            {
+                Assert.That(Math.Abs(s.ContactLag), Is.LessThan(0.1));
+                Assert.That(s.Steps, Is.GreaterThan(0.05 * t.StepsUsed), "no template of a handful of steps");
+            }
         }
 
         [Test]
@@ -24,10 +29,18 @@ namespace HeadGait.Tests
         {
             var t = TestData.Template;
             var back = CorrelationTemplate.Parse(t.Serialize());
-            for (int i = 0; i < t.StepSmv.Length; i++) Assert.That(back.StepSmv[i], Is.EqualTo(t.StepSmv[i]).Within(1e-7));
-            for (int i = 0; i < t.StepLateral.Length; i++) Assert.That(back.StepLateral[i], Is.EqualTo(t.StepLateral[i]).Within(1e-7));
+            Assert.That(back.Templates.Count, Is.EqualTo(t.Templates.Count));
+            for (int k = 0; k < t.Templates.Count; k++)
+            {
+                for (int i = 0; i < CorrelationTemplate.StepPoints; i++)
+                {
+                    Assert.That(back.Templates[k].Smv[i], Is.EqualTo(t.Templates[k].Smv[i]).Within(1e-7));
+                    Assert.That(back.Templates[k].Lateral[i], Is.EqualTo(t.Templates[k].Lateral[i]).Within(1e-7));
+                }
+                Assert.That(back.Templates[k].ContactLag, Is.EqualTo(t.Templates[k].ContactLag));
+            }
             Assert.That(back.MinCorrelation, Is.EqualTo(t.MinCorrelation));
-            Assert.That(back.ContactLag, Is.EqualTo(t.ContactLag));
+            Assert.That(back.ClockLead, Is.EqualTo(t.ClockLead));
             Assert.That(back.Gate.Serialize(), Is.EqualTo(t.Gate.Serialize()));
             Assert.That(back.PhaseMap.Serialize(), Is.EqualTo(t.PhaseMap.Serialize()));
         }
@@ -37,12 +50,14 @@ namespace HeadGait.Tests
         {
             string good = TestData.Template.Serialize();
             Assert.That(() => CorrelationTemplate.Parse("step_smv=1,2", "t.txt"), Throws.TypeOf<FormatException>().With.Message.Contains("t.txt").And.Message.Contains("first line"));
-            Assert.That(() => CorrelationTemplate.Parse(good.Replace("contact_lag=", "lag=")), Throws.TypeOf<FormatException>().With.Message.Contains("contact_lag"));
-            Assert.That(() => CorrelationTemplate.Parse(good.Replace("step_smv=", "step_smv=1,")), Throws.TypeOf<FormatException>().With.Message.Contains("101 values"));
-            Assert.That(() => CorrelationTemplate.Parse(good.Replace("step_lateral=", "step_lateral=NaN,")), Throws.TypeOf<FormatException>().With.Message.Contains("step_lateral"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("contact_lag.0=", "lag.0=")), Throws.TypeOf<FormatException>().With.Message.Contains("contact_lag.0"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("step_smv.0=", "step_smv.0=1,")), Throws.TypeOf<FormatException>().With.Message.Contains("101 values"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("step_lateral.0=", "step_lateral.0=NaN,")), Throws.TypeOf<FormatException>().With.Message.Contains("step_lateral.0"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("templates=", "templates=9\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("lacks 'step_smv."));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("templates=", "templates=0\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("'templates'"));
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("min_correlation=", "min_correlation=1e309\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("min_correlation"));
-            string constant = "step_smv=" + string.Join(",", new string('1', CorrelationTemplate.StepPoints).ToCharArray());
-            string withConstant = System.Text.RegularExpressions.Regex.Replace(good, "step_smv=[^\n]*", constant);
+            string constant = "step_smv.0=" + string.Join(",", new string('1', CorrelationTemplate.StepPoints).ToCharArray());
+            string withConstant = System.Text.RegularExpressions.Regex.Replace(good, "step_smv\\.0=[^\n]*", constant);
             Assert.That(() => CorrelationTemplate.Parse(withConstant), Throws.TypeOf<FormatException>().With.Message.Contains("constant"));
         }
 
@@ -51,7 +66,7 @@ namespace HeadGait.Tests
         {
             string good = TestData.Template.Serialize();
             foreach (var variant in new[] { good.Replace("\n", "\r\n"), good.Replace("\n", "\r"), "\uFEFF" + good })
-                Assert.That(CorrelationTemplate.Parse(variant).StepSmv[10], Is.EqualTo(TestData.Template.StepSmv[10]).Within(1e-7));
+                Assert.That(CorrelationTemplate.Parse(variant).Templates[0].Smv[10], Is.EqualTo(TestData.Template.Templates[0].Smv[10]).Within(1e-7));
         }
 
         [Test]
@@ -77,9 +92,9 @@ namespace HeadGait.Tests
                 double time = i * 0.01;
                 int k = (int)Math.Floor(time / step + 1e-9);
                 double u = Math.Max(0, time / step - k);
-                double smv = 2.0 * CorrelationTemplate.At(t.StepSmv, u);
+                double smv = 2.0 * CorrelationTemplate.At(t.Templates[0].Smv, u);
                 double side = k % 2 == 0 ? 1 : -1; // even steps are left steps
-                double lateral = side * CorrelationTemplate.At(t.StepLateral, u);
+                double lateral = side * CorrelationTemplate.At(t.Templates[0].Lateral, u);
                 samples.Add(new ImuSample(time, 0, lateral, 9.80665 + smv));
             }
             return samples;
@@ -88,10 +103,10 @@ namespace HeadGait.Tests
         [Test]
         public void DetectsEachContactOfAStreamMadeOfTheTemplate()
         {
-            var t = TestData.Template.With(gate: WalkingGate.Open, contactLag: 0);
+            var t = TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
             var cor = new CorrelationClassifier(t);
             var detected = new List<(double time, double evidence)>();
-            cor.ContactDetected += (time, evidence, r) => detected.Add((time, evidence));
+            cor.ContactDetected += (time, evidence, r, template) => detected.Add((time, evidence));
             var pipeline = new GaitPipeline(cor);
             var walk = TemplateWalk(t, 12, out var contacts);
             foreach (var s in walk) pipeline.Push(s);
@@ -130,12 +145,16 @@ namespace HeadGait.Tests
         [Test]
         public void StaysUsableAcrossTheGeneratedEvaluationRecordings()
         {
+            var all = new List<GaitMetrics>();
             foreach (var rec in TestData.EvalSet())
             {
                 var r = ReplayEvaluator.Run(rec, new CorrelationClassifier(TestData.Template));
-                Assert.That(r.ClassifierMetrics.MisclassificationRate, Is.LessThan(0.3), rec.Name);
+                TestContext.WriteLine($"{rec.Name}: {r.ClassifierMetrics.MisclassificationRate:P1}, walking as standing {r.ClassifierMetrics.WalkingAsStanding:P1}");
+                Assert.That(r.ClassifierMetrics.MisclassificationRate, Is.LessThan(0.4), rec.Name);
                 Assert.That(r.ClassifierMetrics.WalkingAsStanding, Is.LessThan(0.1), rec.Name);
+                all.Add(r.ClassifierMetrics);
             }
+            Assert.That(GaitMetrics.Pool(all).MisclassificationRate, Is.LessThan(0.25));
         }
 
         [Test]
@@ -154,7 +173,7 @@ namespace HeadGait.Tests
             {
                 var cor = new CorrelationClassifier(TestData.Template, new CorrelationSettings { MinCorrelationOverride = threshold });
                 int n = 0;
-                cor.ContactDetected += (t, e, r) =>
+                cor.ContactDetected += (t, e, r, k) =>
                 {
                     Assert.That(r, Is.GreaterThanOrEqualTo(threshold));
                     n++;

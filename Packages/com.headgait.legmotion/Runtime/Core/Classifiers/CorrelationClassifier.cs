@@ -47,12 +47,14 @@ namespace HeadGait
         readonly CorrelationTemplate template;
         readonly CorrelationSettings settings;
         readonly StepClock clock;
-        readonly double[][] stepCurves;     // per step length P: the template at P samples, centred, unit norm
-        readonly double[][] lateralCurves;  // the same for the lateral template
+        readonly int periods;
+        readonly double[][][] stepCurves;     // per template and step length P: the template at P samples, centred, unit norm
+        readonly double[][][] lateralCurves;  // the same for the lateral templates
         readonly double[] prefix, prefixSq;
         readonly double[] recentR, recentEvidence, recentTime;
+        readonly int[] recentTemplate;
         readonly double minCorrelation;
-        readonly double[][] startMean, startNorm; // per step length and phase: the periodic template's mean and spread over StartWindow samples
+        readonly double[][][] startNorm; // per template, step length and phase: the periodic template's spread over StartWindow samples
         readonly double[] centred;
         int recentCount;
         int stillWindows;
@@ -66,36 +68,37 @@ namespace HeadGait
                 throw new ArgumentException("Step search range must satisfy 8 <= MinStepSamples <= MaxStepSamples <= 400.");
             if (s.PeakConfirmSamples < 1 || s.PeakConfirmSamples > 50) throw new ArgumentException("PeakConfirmSamples must be 1..50.");
             minCorrelation = double.IsNaN(s.MinCorrelationOverride) ? template.MinCorrelation : s.MinCorrelationOverride;
-            clock = new StepClock(template.PhaseMap, s.Clock);
-            int periods = s.MaxStepSamples - s.MinStepSamples + 1;
-            stepCurves = new double[periods][];
-            lateralCurves = new double[periods][];
-            for (int i = 0; i < periods; i++)
+            var clockSettings = s.Clock.Clone();
+            clockSettings.Lead = template.ClockLead;
+            clock = new StepClock(template.PhaseMap, clockSettings);
+            periods = s.MaxStepSamples - s.MinStepSamples + 1;
+            int templates = template.Templates.Count, L = s.StartWindow;
+            stepCurves = new double[templates][][];
+            lateralCurves = new double[templates][][];
+            startNorm = new double[templates][][];
+            for (int t = 0; t < templates; t++)
             {
-                int p = s.MinStepSamples + i;
-                stepCurves[i] = Normalised(template.StepSmv, p);
-                lateralCurves[i] = Normalised(template.StepLateral, p);
-            }
-            int L = s.StartWindow;
-            startMean = new double[periods][];
-            startNorm = new double[periods][];
-            for (int i = 0; i < periods; i++)
-            {
-                int p = s.MinStepSamples + i;
-                startMean[i] = new double[p];
-                startNorm[i] = new double[p];
-                for (int k = 0; k < p; k++)
+                stepCurves[t] = new double[periods][];
+                lateralCurves[t] = new double[periods][];
+                startNorm[t] = new double[periods][];
+                for (int i = 0; i < periods; i++)
                 {
-                    double m = 0, m2 = 0;
-                    for (int j = 0; j < L; j++)
+                    int p = s.MinStepSamples + i;
+                    stepCurves[t][i] = Normalised(template.Templates[t].Smv, p);
+                    lateralCurves[t][i] = Normalised(template.Templates[t].Lateral, p);
+                    startNorm[t][i] = new double[p];
+                    for (int k = 0; k < p; k++)
                     {
-                        double v = stepCurves[i][Mod(k - (L - 1 - j), p)];
-                        m += v;
-                        m2 += v * v;
+                        double m = 0, m2 = 0;
+                        for (int j = 0; j < L; j++)
+                        {
+                            double v = stepCurves[t][i][Mod(k - (L - 1 - j), p)];
+                            m += v;
+                            m2 += v * v;
+                        }
+                        m /= L;
+                        startNorm[t][i][k] = Math.Sqrt(Math.Max(0, m2 - L * m * m));
                     }
-                    m /= L;
-                    startMean[i][k] = m;
-                    startNorm[i][k] = Math.Sqrt(Math.Max(0, m2 - L * m * m));
                 }
             }
             centred = new double[L];
@@ -105,6 +108,7 @@ namespace HeadGait
             recentR = new double[ring];
             recentEvidence = new double[ring];
             recentTime = new double[ring];
+            recentTemplate = new int[ring];
         }
 
         /// <summary>The template curve resampled to p samples (the last one at the step's end), centred, unit norm.</summary>
@@ -134,8 +138,11 @@ namespace HeadGait
         /// <summary>Best Pearson r of the last window (diagnostics).</summary>
         public double LastCorrelation { get; private set; }
 
-        /// <summary>Raised for every contact the clock takes: its time (lag-corrected), the evidence that it is the left foot's, and its r.</summary>
-        public event Action<double, double, double> ContactDetected;
+        /// <summary>
+        /// Raised for every contact the clock takes: its time (lag-corrected), the evidence that it is the left foot's, its r
+        /// and the template that matched.
+        /// </summary>
+        public event Action<double, double, double, int> ContactDetected;
 
         public void Reset()
         {
@@ -163,33 +170,42 @@ namespace HeadGait
             // The head does not move like walking in the newest 0.5 s: standing, whatever the shape.
             int valid = Math.Min(window.Count, WindowLength);
             double best = -1;
-            int bestIndex = -1;
+            int bestIndex = -1, bestTemplate = 0;
             bool moving = template.Gate.Passes(window);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             if (moving)
             {
-                int from = 0, to = Math.Min(stepCurves.Length - 1, valid - settings.MinStepSamples);
+                int from = 0, to = Math.Min(periods - 1, valid - settings.MinStepSamples);
                 if (clock.IsWalking(now) && to >= 0)
                 {
                     int centre = (int)Math.Round(clock.StepPeriod * window.SampleRate) - settings.MinStepSamples;
                     from = Math.Max(0, Math.Min(to, centre - settings.PeriodTolerance));
                     to = Math.Max(from, Math.Min(to, centre + settings.PeriodTolerance));
                 }
-                for (int i = from; i <= to; i++)
+                for (int t = 0; t < stepCurves.Length; t++)
                 {
-                    double r = Correlation(x, o, stepCurves[i], WindowLength);
-                    if (r > best)
+                    for (int i = from; i <= to; i++)
                     {
-                        best = r;
-                        bestIndex = i;
+                        double r = Correlation(x, o, stepCurves[t][i], WindowLength);
+                        if (r > best)
+                        {
+                            best = r;
+                            bestIndex = i;
+                            bestTemplate = t;
+                        }
                     }
                 }
             }
             LastCorrelation = best;
-            double evidence = bestIndex >= 0 && best >= minCorrelation ? -Correlation(window.Lateral, n - lateralCurves[bestIndex].Length, lateralCurves[bestIndex], lateralCurves[bestIndex].Length, true) : 0;
             // The step that just ended was a left step when the lateral matches the left-step template: the foot landing now is the right one.
-            Remember(now, best, evidence);
+            double evidence = 0;
+            if (bestIndex >= 0 && best >= minCorrelation)
+            {
+                var lateral = lateralCurves[bestTemplate][bestIndex];
+                evidence = -Correlation(window.Lateral, n - lateral.Length, lateral, lateral.Length, true);
+            }
+            Remember(now, best, evidence, bestTemplate);
             if (recentCount == recentR.Length)
             {
                 int centre = settings.PeakConfirmSamples;
@@ -197,8 +213,10 @@ namespace HeadGait
                 bool peak = r >= minCorrelation;
                 for (int i = 0; peak && i < recentR.Length; i++)
                     if (i != centre && (recentR[i] > r || (recentR[i] == r && i < centre))) peak = false;
-                if (peak && clock.Contact(recentTime[centre] - template.ContactLag, recentEvidence[centre]))
-                    ContactDetected?.Invoke(recentTime[centre] - template.ContactLag, recentEvidence[centre], r);
+                int t = recentTemplate[centre];
+                double contact = recentTime[centre] - template.Templates[t].ContactLag;
+                if (peak && clock.Contact(contact, recentEvidence[centre]))
+                    ContactDetected?.Invoke(contact, recentEvidence[centre], r, t);
             }
             if (!clock.IsWalking(now) && settings.StartMargin >= 0 && moving) TryStart(window, now, valid);
             return clock.Predict(now, Math.Max(0, best));
@@ -228,36 +246,50 @@ namespace HeadGait
             }
             if (ss <= 1e-12) return;
             double norm = Math.Sqrt(ss), bestR = -1;
-            int bestI = -1, bestK = 0;
-            for (int pass = 0; pass < 2; pass++)
+            int bestT = -1, bestI = -1, bestK = 0;
+            for (int t = 0; t < stepCurves.Length; t++)
             {
-                int iFrom = pass == 0 ? 0 : Math.Max(0, bestI - 1), iTo = pass == 0 ? stepCurves.Length - 1 : Math.Min(stepCurves.Length - 1, bestI + 1);
-                int stride = pass == 0 ? 2 : 1;
-                int ci = bestI, ck = bestK;
-                for (int i = iFrom; i <= iTo; i += stride)
+                // A coarse grid over step length and phase, then the neighbours of its best point.
+                double tr = -1;
+                int ti = -1, tk = 0;
+                for (int pass = 0; pass < 2; pass++)
                 {
-                    var curve = stepCurves[i];
-                    int p = curve.Length;
-                    int kFrom = pass == 0 ? 0 : ck * p / stepCurves[ci].Length - 2, kTo = pass == 0 ? p - 1 : kFrom + 4;
-                    for (int k = kFrom; k <= kTo; k += stride)
+                    int iFrom = pass == 0 ? 0 : Math.Max(0, ti - 1), iTo = pass == 0 ? periods - 1 : Math.Min(periods - 1, ti + 1);
+                    int stride = pass == 0 ? 2 : 1;
+                    int ci = ti, ck = tk;
+                    for (int i = iFrom; i <= iTo; i += stride)
                     {
-                        int km = Mod(k, p);
-                        if (startNorm[i][km] <= 1e-12) continue;
-                        double dot = 0;
-                        for (int j = 0; j < L; j++) dot += centred[j] * curve[Mod(km - (L - 1 - j), p)];
-                        double r = dot / (norm * startNorm[i][km]);
-                        if (r > bestR)
+                        var curve = stepCurves[t][i];
+                        int p = curve.Length;
+                        int kFrom = pass == 0 ? 0 : ck * p / stepCurves[t][ci].Length - 2, kTo = pass == 0 ? p - 1 : kFrom + 4;
+                        for (int k = kFrom; k <= kTo; k += stride)
                         {
-                            bestR = r;
-                            bestI = i;
-                            bestK = km;
+                            int km = Mod(k, p);
+                            if (startNorm[t][i][km] <= 1e-12) continue;
+                            double dot = 0;
+                            for (int j = 0; j < L; j++) dot += centred[j] * curve[Mod(km - (L - 1 - j), p)];
+                            double r = dot / (norm * startNorm[t][i][km]);
+                            if (r > tr)
+                            {
+                                tr = r;
+                                ti = i;
+                                tk = km;
+                            }
                         }
                     }
+                    if (ti < 0) break;
                 }
-                if (bestI < 0) return;
+                if (ti >= 0 && tr > bestR)
+                {
+                    bestR = tr;
+                    bestT = t;
+                    bestI = ti;
+                    bestK = tk;
+                }
             }
+            if (bestT < 0) return;
             if (bestR < minCorrelation + settings.StartMargin) return;
-            var lateral = lateralCurves[bestI];
+            var lateral = lateralCurves[bestT][bestI];
             int period = lateral.Length;
             int sinceContact = (bestK + 1) % period; // samples since the step's initial contact (index P-1 is the contact)
             // Hypothesis: the last contact was the left foot's, so the step in progress is a left step and the one before a right step.
@@ -278,18 +310,20 @@ namespace HeadGait
             clock.Start(now - sinceContact / window.SampleRate, leftEvidence, period / window.SampleRate);
         }
 
-        void Remember(double time, double r, double evidence)
+        void Remember(double time, double r, double evidence, int templateIndex)
         {
             if (recentCount == recentR.Length)
             {
                 Array.Copy(recentR, 1, recentR, 0, recentR.Length - 1);
                 Array.Copy(recentEvidence, 1, recentEvidence, 0, recentR.Length - 1);
                 Array.Copy(recentTime, 1, recentTime, 0, recentR.Length - 1);
+                Array.Copy(recentTemplate, 1, recentTemplate, 0, recentR.Length - 1);
                 recentCount--;
             }
             recentR[recentCount] = r;
             recentEvidence[recentCount] = evidence;
             recentTime[recentCount] = time;
+            recentTemplate[recentCount] = templateIndex;
             recentCount++;
         }
 
@@ -320,16 +354,17 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// Sets the correlation threshold and the contact lag on labelled recordings. First a replay with no threshold:
-        /// the r of correlation peaks that match a true contact (within 0.15 s) and of those that do not give the threshold
-        /// that best separates them. Then a replay with that threshold: the lag is the median time from a true contact to
-        /// the peak the clock takes for it (measured with the threshold in force, since weaker early peaks would bias it).
+        /// Sets the correlation threshold and each template's contact lag on labelled recordings. First a replay with no
+        /// threshold: the r of correlation peaks that match a true contact (within 0.15 s) and of those that do not give the
+        /// threshold that best separates them. Then a replay with that threshold: each template's lag is the median time from
+        /// a true contact to the peaks it detected (measured with the threshold in force, since weaker early peaks would
+        /// bias it); a template with fewer than 8 matched peaks takes the median of all.
         /// </summary>
         public static CorrelationTemplate Calibrate(CorrelationTemplate template, IReadOnlyList<Recording> recordings, CorrelationSettings settings = null)
         {
             var trueR = new List<double>();
             var falseR = new List<double>();
-            Match(template.With(minCorrelation: -0.99, contactLag: 0), recordings, settings, (offset, r) =>
+            Match(template.With(minCorrelation: -0.99).WithLag(0), recordings, settings, (offset, r, t) =>
             {
                 if (Math.Abs(offset) <= 0.15) trueR.Add(r);
                 else falseR.Add(r);
@@ -349,26 +384,39 @@ namespace HeadGait
                     bestThreshold = th;
                 }
             }
-            var thresholded = template.With(minCorrelation: Math.Round(bestThreshold, 2), contactLag: 0);
-            var lags = new List<double>();
-            Match(thresholded, recordings, settings, (offset, r) =>
+            var thresholded = template.With(minCorrelation: Math.Round(bestThreshold, 2)).WithLag(0);
+            var lags = new List<double>[template.Templates.Count];
+            for (int k = 0; k < lags.Length; k++) lags[k] = new List<double>();
+            var all = new List<double>();
+            Match(thresholded, recordings, settings, (offset, r, t) =>
             {
-                if (Math.Abs(offset) <= 0.15) lags.Add(offset);
+                if (Math.Abs(offset) > 0.15) return;
+                lags[t].Add(offset);
+                all.Add(offset);
             });
-            if (lags.Count < 8) return thresholded;
-            lags.Sort();
-            return thresholded.With(contactLag: Math.Max(-0.45, Math.Min(0.45, lags[lags.Count / 2])));
+            if (all.Count < 8) return thresholded;
+            double overall = Median(all);
+            var calibrated = new List<StepTemplate>();
+            for (int k = 0; k < lags.Length; k++)
+                calibrated.Add(thresholded.Templates[k].WithLag(Math.Max(-0.45, Math.Min(0.45, lags[k].Count >= 8 ? Median(lags[k]) : overall))));
+            return thresholded.With(templates: calibrated);
+        }
+
+        static double Median(List<double> v)
+        {
+            v.Sort();
+            return v[v.Count / 2];
         }
 
         /// <summary>Replays each recording and reports, for every contact the clock takes, its offset from the nearest true contact and its r.</summary>
-        static void Match(CorrelationTemplate probe, IReadOnlyList<Recording> recordings, CorrelationSettings settings, Action<double, double> onContact)
+        static void Match(CorrelationTemplate probe, IReadOnlyList<Recording> recordings, CorrelationSettings settings, Action<double, double, int> onContact)
         {
             foreach (var rec in recordings)
             {
                 var cor = new CorrelationClassifier(probe, settings);
-                var detections = new List<(double time, double r)>();
+                var detections = new List<(double time, double r, int template)>();
                 var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
-                cor.ContactDetected += (t, e, r) => detections.Add((t, r));
+                cor.ContactDetected += (t, e, r, k) => detections.Add((t, r, k));
                 foreach (var s in rec.Samples) pre.Push(s.Imu, w => cor.Classify(w));
                 PhaseEvents.ExtractTruth(rec, out var times, out var left, out var right);
                 var contacts = PhaseEvents.Contacts(times, left, right);
@@ -377,7 +425,7 @@ namespace HeadGait
                     double nearest = double.PositiveInfinity;
                     foreach (var c in contacts)
                         if (Math.Abs(d.time - c.Time) < Math.Abs(nearest)) nearest = d.time - c.Time;
-                    onContact(nearest, d.r);
+                    onContact(nearest, d.r, d.template);
                 }
             }
         }

@@ -31,6 +31,12 @@ namespace HeadGait
         /// </summary>
         public int StopAfterStillWindows = 15;
 
+        /// <summary>
+        /// Seconds the reported stride position runs ahead of the clock. A contact is only known after it happened, so
+        /// phase changes between contacts come out late on average; the trainer measures by how much and sets this.
+        /// </summary>
+        public double Lead = 0;
+
         public StepClockSettings Clone() => (StepClockSettings)MemberwiseClone();
     }
 
@@ -120,7 +126,7 @@ namespace HeadGait
 
         /// <summary>Stride position now: the last contact's foot landing, advanced at the step period.</summary>
         public double StridePosition(double now)
-            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now - lastContact) / (2 * period);
+            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now + settings.Lead - lastContact) / (2 * period);
 
         public GaitPrediction Predict(double now, double confidence)
             => IsWalking(now)

@@ -69,6 +69,7 @@ namespace HeadGait
                 new KeyValuePair<string, string>("contact_lag", ContactLag.ToString("R", ci)),
                 new KeyValuePair<string, string>("lateral_profile", Join(LateralProfile)),
                 new KeyValuePair<string, string>("contacts_to_start", Clock.ContactsToStart.ToString(ci)),
+                new KeyValuePair<string, string>("clock_lead", Clock.Lead.ToString("R", ci)),
                 new KeyValuePair<string, string>("walking_gate", Gate.Serialize()),
             });
         }
@@ -97,6 +98,7 @@ namespace HeadGait
                 LateralProfile = kv.Numbers("lateral_profile", ProfileSamples, -1e3, 1e3),
             };
             s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
+            s.Clock.Lead = kv.Number("clock_lead", -0.49, 0.49, 0);
             if (kv.Has("walking_gate")) s.Gate = new WalkingGate(kv.Numbers("walking_gate", WalkingGate.FeatureCount + 1, -1e4, 1e4));
             return s;
         }

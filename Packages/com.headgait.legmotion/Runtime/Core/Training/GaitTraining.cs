@@ -38,10 +38,29 @@ namespace HeadGait.Training
         }
 
         public static ThresholdSettings TrainThreshold(IReadOnlyList<Recording> training, PhaseMap map, WalkingGate gate)
-            => ThresholdClassifier.Calibrate(training, map, gate);
+        {
+            var s = ThresholdClassifier.Calibrate(training, map, gate);
+            s.Clock.Lead = ContactTiming(() => new ThresholdClassifier(s), training);
+            return s;
+        }
 
         public static CorrelationTemplate TrainCorrelation(IReadOnlyList<Recording> training, PhaseMap map, WalkingGate gate, CorrelationSettings settings = null)
-            => CorrelationClassifier.Calibrate(CorrelationTemplate.Train(training, map, gate), training, settings);
+        {
+            var t = CorrelationClassifier.Calibrate(CorrelationTemplate.Train(training, map, gate), training, settings);
+            return t.With(clockLead: ContactTiming(() => new CorrelationClassifier(t, settings), training));
+        }
+
+        /// <summary>
+        /// Mean time by which a step-clock classifier reports foot contacts late on the training recordings (s, clamped to
+        /// 0.2): its clock's lead. Contacts are only detected after they happen, so between them the clock runs late.
+        /// </summary>
+        static double ContactTiming(System.Func<IGaitClassifier> make, IReadOnlyList<Recording> training)
+        {
+            var parts = new List<GaitMetrics>();
+            foreach (var rec in training) parts.Add(ReplayEvaluator.Run(rec, make()).ClassifierMetrics);
+            double ms = GaitMetrics.Pool(parts).StepTimingMeanMs;
+            return double.IsNaN(ms) ? 0 : System.Math.Max(-0.2, System.Math.Min(0.2, ms / 1000));
+        }
 
         /// <summary>FNV-1a of a name: a per-recording seed that does not depend on the order recordings are listed in.</summary>
         public static ulong Hash(string s)

@@ -32,8 +32,12 @@ namespace HeadGait.Training
             public long[] PerClass;
         }
 
+        /// <param name="labelLead">
+        /// Seconds after the window's newest sample whose labels are the target. A classifier that only sees the past
+        /// hedges at each phase change and reports it late; aiming a little ahead cancels that on average.
+        /// </param>
         public static Summary Export(IReadOnlyList<Item> items, IReadOnlyList<string> fileNames, WindowFeatures features,
-            StrideSegments segments, int stride, string directory)
+            StrideSegments segments, int stride, string directory, double labelLead = 0)
         {
             if (stride < 1) throw new ArgumentException("Stride must be at least 1.", nameof(stride));
             Directory.CreateDirectory(directory);
@@ -58,7 +62,7 @@ namespace HeadGait.Training
                         pre.Push(s.Imu, w =>
                         {
                             if (produced++ % stride != 0) return;
-                            while (labelRow + 1 < rows.Count && rows[labelRow + 1].Imu.Time <= w.EndTime + 1e-9) labelRow++;
+                            while (labelRow + 1 < rows.Count && rows[labelRow + 1].Imu.Time <= w.EndTime + labelLead + 1e-9) labelRow++;
                             if (labelRow < 0 || !rows[labelRow].HasTruth) return;
                             int cls = segments.ClassOf(rows[labelRow].Left, rows[labelRow].Right);
                             features.Extract(w, buffer);
@@ -86,6 +90,7 @@ namespace HeadGait.Training
                 w.WriteLine($"classes={segments.Names()}");
                 w.WriteLine($"phase_map={segments.Map.Serialize()}");
                 w.WriteLine($"stride={stride}");
+                w.WriteLine($"label_lead_s={labelLead.ToString("R", System.Globalization.CultureInfo.InvariantCulture)}");
                 w.WriteLine($"windows={summary.Windows}");
             }
             return summary;
