@@ -30,10 +30,10 @@ namespace HeadGait.Tests
         }
 
         [Test]
-        public void PerrysOwnMapHasAZeroLengthSegmentAndSoFifteen()
+        public void PerrysOwnMapSharesFourBoundariesBetweenTheFeetAndSoHasTwelve()
         {
-            // Perry: left toe-off (62 %) coincides with the right foot's mid stance onset (50 + 12 %).
-            Assert.That(new StrideSegments(PhaseMap.Perry).Count, Is.EqualTo(15));
+            // Perry with the right foot half a stride later: 0/50, 12/62, 50/100 and 62/112 % coincide.
+            Assert.That(new StrideSegments(PhaseMap.Perry).Count, Is.EqualTo(12));
         }
     }
 

@@ -69,16 +69,23 @@ namespace HeadGait
             return Onsets(t, l, r);
         }
 
-        /// <summary>The labelled, finite, time-ordered rows of a recording as parallel lists.</summary>
+        /// <summary>
+        /// The labelled, finite, time-ordered rows of a recording as parallel lists. A row stamped far ahead of its
+        /// neighbours (more than a second, with the next row back in order) is an outlier and left out, so that one bad
+        /// timestamp does not hide every later row from scoring.
+        /// </summary>
         public static void ExtractTruth(Recording recording, out List<double> times, out List<GaitPhase> left, out List<GaitPhase> right)
         {
             times = new List<double>();
             left = new List<GaitPhase>();
             right = new List<GaitPhase>();
             double last = double.NegativeInfinity;
-            foreach (var s in recording.Samples)
+            var rows = recording.Samples;
+            for (int i = 0; i < rows.Count; i++)
             {
+                var s = rows[i];
                 if (!s.HasTruth || !s.Imu.IsFinite || !(s.Imu.Time > last)) continue;
+                if (s.Imu.Time - last > 1.0 && i + 1 < rows.Count && rows[i + 1].Imu.Time < s.Imu.Time && rows[i + 1].Imu.Time > last) continue;
                 last = s.Imu.Time;
                 times.Add(s.Imu.Time);
                 left.Add(s.Left);

@@ -48,10 +48,13 @@ namespace HeadGait
         public SampleOutcome Push(in ImuSample sample)
         {
             var outcome = preprocessor.Push(sample, onWindow);
-            if (outcome == SampleOutcome.AcceptedAfterGap)
+            if (outcome == SampleOutcome.AcceptedAfterGap || outcome == SampleOutcome.AcceptedAfterRebase)
             {
-                // The signal broke off: forget the stale history rather than animate through the hole.
+                // The signal broke off or its clock moved: forget the stale history and let the avatar stand rather than
+                // freeze mid-stride until the next full window.
                 classifier.Reset();
+                animator.Reset();
+                Latest = new AnimatorFrame(sample.Time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
             }
             return outcome;
         }

@@ -28,6 +28,18 @@ namespace HeadGait
         /// <summary>Input samples whose magnitude exceeds this (m/s^2) are treated as corrupt and skipped.</summary>
         public double MaxMagnitude = 200.0;
 
+        /// <summary>
+        /// A sample further ahead of the stream's clock than this (s), or further behind than <see cref="BackwardTolerance"/>,
+        /// is held as suspect: one glitched timestamp must not become the clock that every later sample is measured by.
+        /// </summary>
+        public double SuspectJump = 1.0;
+
+        /// <summary>Backward steps up to this (s) are late samples and skipped; longer ones are a clock that restarted.</summary>
+        public double BackwardTolerance = 0.1;
+
+        /// <summary>Suspect samples that must follow each other like a stream (each within MaxGap) before the stream re-bases on them.</summary>
+        public int RebaseSamples = 3;
+
         public PreprocessorSettings Clone() => (PreprocessorSettings)MemberwiseClone();
 
         public void Validate()
@@ -37,6 +49,9 @@ namespace HeadGait
             if (History > 100000) throw new ArgumentException("History must be at most 100000 samples.");
             if (!(MaxGap > 0)) throw new ArgumentException("MaxGap must be positive.");
             if (!(Gravity >= 0)) throw new ArgumentException("Gravity must not be negative.");
+            if (!(SuspectJump >= MaxGap)) throw new ArgumentException("SuspectJump must be at least MaxGap.");
+            if (!(BackwardTolerance >= 0)) throw new ArgumentException("BackwardTolerance must not be negative.");
+            if (RebaseSamples < 1 || RebaseSamples > 100) throw new ArgumentException("RebaseSamples must be 1..100.");
         }
     }
 
@@ -50,14 +65,21 @@ namespace HeadGait
         SkippedOutOfOrder,
         SkippedDuplicateTime,
         SkippedImplausible,
+        /// <summary>Held back: its time is far from the stream's clock; it counts only if the next samples agree with it.</summary>
+        SkippedSuspectTime,
+        /// <summary>Accepted as the first sample of a new time base that the following samples confirmed: the window restarted.</summary>
+        AcceptedAfterRebase,
     }
 
     /// <summary>
     /// Streaming front end: takes head accelerometer samples at any (irregular) rate, linearly resamples
-    /// them to a fixed grid (100 Hz), computes SMV minus gravity and the lateral channel, and emits a
+    /// them to a fixed grid (100 Hz), computes SMV minus gravity and the head-frame channels, and emits a
     /// sliding window (50 samples, step 1) for every grid sample once the window is full.
-    /// Bad samples (NaN/infinite, out-of-order or repeated timestamps, absurd magnitudes) are skipped and
-    /// counted, never thrown on.
+    /// Bad samples (NaN/infinite, repeated timestamps, absurd magnitudes) are skipped and counted, never thrown on.
+    /// The clock policy: a sample slightly behind (late) is skipped; a hole up to <see cref="PreprocessorSettings.SuspectJump"/>
+    /// restarts the window; a sample far ahead or far behind is held as suspect and the stream re-bases on it only when
+    /// <see cref="PreprocessorSettings.RebaseSamples"/> samples in a row agree with it, so neither a single glitched
+    /// timestamp nor a restarted clock freezes the stream.
     /// </summary>
     public sealed class StreamPreprocessor
     {
@@ -71,6 +93,8 @@ namespace HeadGait
 
         bool hasPrevious;
         ImuSample previous;
+        readonly ImuSample[] suspects;
+        int suspectCount;
         double previousSmv;
         long gridIndex;       // index of the next grid sample to produce, relative to gridOrigin
         double gridOrigin;    // time of grid index 0
@@ -89,6 +113,7 @@ namespace HeadGait
             fwdRing = new double[capacity];
             vertRing = new double[capacity];
             window = new SignalWindow(capacity, settings.SampleRate);
+            suspects = new ImuSample[settings.RebaseSamples];
             dt = 1.0 / settings.SampleRate;
         }
 
@@ -98,17 +123,21 @@ namespace HeadGait
         public int SkippedOutOfOrder { get; private set; }
         public int SkippedDuplicateTime { get; private set; }
         public int SkippedImplausible { get; private set; }
+        public int SkippedSuspectTime { get; private set; }
+        /// <summary>Times the stream moved to a new time base that its samples agreed on.</summary>
+        public int Rebases { get; private set; }
         public int Gaps { get; private set; }
         public int Accepted { get; private set; }
 
         /// <summary>Resampled grid samples produced so far.</summary>
         public long Produced => produced;
 
-        public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible;
+        public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible + SkippedSuspectTime;
 
         public void Reset()
         {
             hasPrevious = false;
+            suspectCount = 0;
             filled = 0;
             gridIndex = 0;
         }
@@ -137,17 +166,21 @@ namespace HeadGait
                 Accepted++;
                 return SampleOutcome.Accepted;
             }
-            if (sample.Time < previous.Time)
+            double step = sample.Time - previous.Time;
+            if (step > settings.SuspectJump || step < -settings.BackwardTolerance) return Suspect(sample, onWindow);
+            if (step < 0)
             {
                 SkippedOutOfOrder++;
                 return SampleOutcome.SkippedOutOfOrder;
             }
-            if (sample.Time == previous.Time)
+            if (step == 0)
             {
                 SkippedDuplicateTime++;
                 return SampleOutcome.SkippedDuplicateTime;
             }
-            if (sample.Time - previous.Time > settings.MaxGap)
+            // The stream's own clock goes on: whatever was held as suspect was a glitch (already counted).
+            suspectCount = 0;
+            if (step > settings.MaxGap)
             {
                 Gaps++;
                 Start(sample, smv, onWindow);
@@ -172,6 +205,32 @@ namespace HeadGait
             previousSmv = smv;
             Accepted++;
             return SampleOutcome.Accepted;
+        }
+
+        /// <summary>Holds a sample far from the stream's clock; re-bases once enough follow it like a stream.</summary>
+        SampleOutcome Suspect(in ImuSample sample, Action<SignalWindow> onWindow)
+        {
+            if (suspectCount > 0)
+            {
+                double step = sample.Time - suspects[suspectCount - 1].Time;
+                if (!(step > 0 && step <= settings.MaxGap)) suspectCount = 0;
+            }
+            suspects[suspectCount++] = sample;
+            if (suspectCount < settings.RebaseSamples)
+            {
+                SkippedSuspectTime++;
+                return SampleOutcome.SkippedSuspectTime;
+            }
+            // The held samples agree: they are the clock now. Restart on the first and replay the rest.
+            int held = suspectCount;
+            suspectCount = 0;
+            Rebases++;
+            SkippedSuspectTime -= held - 1;
+            var first = suspects[0];
+            Start(first, Smv(first), onWindow);
+            Accepted++;
+            for (int i = 1; i < held; i++) Push(suspects[i], onWindow);
+            return SampleOutcome.AcceptedAfterRebase;
         }
 
         void Start(in ImuSample sample, double smv, Action<SignalWindow> onWindow)

@@ -164,6 +164,10 @@ namespace HeadGait
                 return line;
             }
             if (bytes.Length >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) pos = 3;
+            var magicBytes = Encoding.ASCII.GetBytes(Magic + "\n");
+            bool magicOk = bytes.Length - pos >= magicBytes.Length;
+            for (int i = 0; magicOk && i < magicBytes.Length - 1; i++) magicOk = bytes[pos + i] == magicBytes[i];
+            if (!magicOk) throw new ModelFormatException(m.Source, $"does not start with '{Magic}': not a HeadGait model file");
             string magic = NextLine();
             if (magic != Magic) throw new ModelFormatException(m.Source, $"first line must be '{Magic}': not a HeadGait model file");
             var specs = new List<(string name, bool f64, int[] shape)>();
