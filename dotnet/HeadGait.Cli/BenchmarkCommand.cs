@@ -16,20 +16,22 @@ namespace HeadGait.Cli
         public static Command Build()
         {
             var data = new Option<string[]>("--data") { Description = "labelled CSV recordings or folders of them (e.g. ../shared/data/real-train)", Required = true, AllowMultipleArgumentsPerToken = true };
-            var models = new Option<string>("--models") { Description = "model folder whose cv/ holds the SVM and BLSTM fold models (default: the package's Models/)" };
+            var models = new Option<string>("--models") { Description = "trained models whose cost is measured (default: the package's Models/)" };
+            var cvModels = new Option<string>("--cv-models") { Description = "the SVM and BLSTM fold models `headgait train --cv` wrote (default: training/cv-models)" };
             var cv = new Option<string>("--cv") { Description = "cross-validation: style (leave one style out), file (5 folds of files), style,file, or none (cost only)", DefaultValueFactory = _ => "style,file" };
             var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a comma-separated list or all", DefaultValueFactory = _ => "all" };
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
             var perFold = new Option<bool>("--per-fold") { Description = "also print each fold's rows" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cv, classifier, augment, perFold,
+                data, models, cvModels, cv, classifier, augment, perFold,
             };
-            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold)));
+            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string schemes, string classifierList, int augment, bool perFold)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold)
         {
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
@@ -55,7 +57,7 @@ namespace HeadGait.Cli
                     var gate = names.Contains("thr") || names.Contains("cor") ? GaitTraining.TrainGate(augmented) : null;
                     if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gate);
                     if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gate);
-                    string learnedDir = Path.Combine(folder, "cv", scheme, TrainCommand.Safe(fold.Name));
+                    string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
                     foldModels.Svm = learned?.Svm;
                     foldModels.Blstm = learned?.Blstm;
@@ -76,7 +78,7 @@ namespace HeadGait.Cli
                     ? $"Leave one style out ({folds.Count} folds: {string.Join(", ", folds.Select(f => f.Name))}); each style is scored by classifiers that never saw it"
                     : $"Grouped {folds.Count}-fold cross-validation over files");
                 if (missing.Count > 0)
-                    Console.WriteLine($"not evaluated (no fold model under {Path.Combine(folder, "cv", scheme)}; run `headgait train --cv {scheme}`): {string.Join(", ", missing.Take(12))}{(missing.Count > 12 ? ", ..." : "")}");
+                    Console.WriteLine($"not evaluated (no fold model under {Path.Combine(cvFolder, scheme)}; run `headgait train --cv {scheme}`): {string.Join(", ", missing.Take(12))}{(missing.Count > 12 ? ", ..." : "")}");
                 Report.PhaseHeader();
                 if (perFold) foreach (var row in foldRows) Report.PhaseRow(row.fold, row.clf, row.results);
                 foreach (var name in names.Where(n => pooled[n].Count > 0)) Report.PhaseRow($"{scheme} CV pooled", pooled[name][0].Classifier, pooled[name]);

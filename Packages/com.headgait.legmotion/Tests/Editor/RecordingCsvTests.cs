@@ -130,5 +130,30 @@ namespace HeadGait.Tests
                 }
             }
         }
+
+        [Test]
+        public void ByteOrderMarksAndAnyLineEndingsAreRead()
+        {
+            const string body = "# headgait-recording v1\ntimestamp_s,acc_x,acc_y,acc_z\n0.00,0,0,9.8\n0.01,0,0,9.9\n";
+            foreach (var text in new[] { "\uFEFF" + body, "\uFEFF\uFEFF" + body, body.Replace("\n", "\r\n"), body.Replace("\n", "\r") })
+            {
+                var r = RecordingCsv.Parse(text, "bom");
+                Assert.That(r.Samples.Count, Is.EqualTo(2));
+                Assert.That(r.Warnings, Is.Empty);
+            }
+        }
+
+        [Test]
+        public void AbsurdTimestampsAndValuesAreRefusedInStrictModeAndReportedOtherwise()
+        {
+            // Regression: 1e308 s was accepted even in strict mode and silently dropped most of a replay.
+            const string text = "# headgait-recording v1\ntimestamp_s,acc_x,acc_y,acc_z\n0.00,0,0,9.8\n1e308,0,0,9.8\n0.02,0,5000,9.8\n0.03,0,0,9.8\n";
+            var e = Assert.Throws<RecordingFormatException>(() => RecordingCsv.Parse(text, "absurd", strict: true));
+            Assert.That(e.Message, Does.StartWith("absurd:4:").And.Contain("timestamp_s"));
+            var lenient = RecordingCsv.Parse(text, "absurd");
+            Assert.That(lenient.Samples.Count, Is.EqualTo(2));
+            Assert.That(lenient.Warnings[0], Does.Contain("line 4").And.Contain("limit"));
+            Assert.That(lenient.Warnings[1], Does.Contain("line 5").And.Contain("acc_y"));
+        }
     }
 }

@@ -25,6 +25,12 @@ namespace HeadGait
         public static readonly string[] RequiredColumns = { "timestamp_s", "acc_x", "acc_y", "acc_z" };
         public static readonly string[] TruthColumns = { "phase_left", "phase_right" };
 
+        /// <summary>Largest timestamp magnitude read (s): about 31 years. Larger is a unit mix-up (µs as s) or corruption.</summary>
+        public const double MaxTimestamp = 1e9;
+
+        /// <summary>Largest acceleration magnitude per axis read (m/s^2): 100 g, far beyond any head.</summary>
+        public const double MaxAcceleration = 1000;
+
         public static Recording Load(string path, bool strict = false)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
@@ -62,7 +68,8 @@ namespace HeadGait
             while ((line = reader.ReadLine()) != null)
             {
                 lineNo++;
-                string trimmed = line.Trim();
+                // Byte-order marks (one or several, from tools that add one when saving) are not content.
+                string trimmed = line.TrimStart('\uFEFF').Trim();
                 if (trimmed.Length == 0) continue;
                 if (trimmed.StartsWith("#", StringComparison.Ordinal))
                 {
@@ -95,6 +102,8 @@ namespace HeadGait
                         error = $"{RequiredColumns[c]} '{cell}' is not a number";
                     else if (double.IsNaN(v[c]) || double.IsInfinity(v[c]))
                         error = $"{RequiredColumns[c]} is not finite";
+                    else if (Math.Abs(v[c]) > (c == 0 ? MaxTimestamp : MaxAcceleration))
+                        error = $"{RequiredColumns[c]} {cell} is beyond the limit of {(c == 0 ? MaxTimestamp : MaxAcceleration).ToString("G", CultureInfo.InvariantCulture)} {(c == 0 ? "s" : "m/s^2")}";
                 }
                 if (error != null)
                 {
