@@ -11,6 +11,7 @@ Runs offline with Debian's python3-torch, python3-sklearn, python3-onnx and pyth
 Seeds and thread counts are fixed, so a run is reproducible on the same machine.
 """
 import argparse
+import warnings
 import json
 import os
 import struct
@@ -176,6 +177,7 @@ def export_blstm_onnx(path, model, timesteps, channels):
             return torch.softmax(self.m(x), dim=1)
 
     dummy = torch.zeros(1, timesteps, channels)
+    warnings.filterwarnings("ignore", category=UserWarning)  # torch's notes on LSTM batch sizes and shape inference
     torch.onnx.export(WithSoftmax(model), dummy, path, opset_version=15, input_names=["window"], output_names=["probabilities"],
                       dynamic_axes={"window": {0: "batch"}, "probabilities": {0: "batch"}})
     import onnx
@@ -328,14 +330,14 @@ def main():
     ap.add_argument("--out", required=True, help="folder for svm.bytes, blstm.bytes, ONNX files and references")
     ap.add_argument("--models", default="svm,blstm")
     ap.add_argument("--exclude", default="", help="file with recording names to leave out (a cross-validation fold's test set)")
-    ap.add_argument("--hidden", type=int, default=32)
-    ap.add_argument("--dropout", type=float, default=0.3)
-    ap.add_argument("--epochs", type=int, default=12)
+    ap.add_argument("--hidden", type=int, default=48)
+    ap.add_argument("--dropout", type=float, default=0.4)
+    ap.add_argument("--epochs", type=int, default=8)
     ap.add_argument("--lr", type=float, default=3e-3)
     ap.add_argument("--batch", type=int, default=256)
     ap.add_argument("--svm-c", type=float, default=100.0)
     ap.add_argument("--svm-degree", type=int, default=3)
-    ap.add_argument("--svm-gamma", default="scale")
+    ap.add_argument("--svm-gamma", default="0.005")
     ap.add_argument("--svm-coef0", type=float, default=1.0)
     ap.add_argument("--svm-windows", type=int, default=12000)
     ap.add_argument("--no-onnx", action="store_true")

@@ -17,6 +17,7 @@ namespace HeadGait.Cli
                 FromBvhCommand.Build(),
                 GenerateCommand.Build(),
                 UnityMetaCommand.Build(),
+                StudyCommand.Build(),
             };
             try
             {
@@ -27,7 +28,7 @@ namespace HeadGait.Cli
                 Console.Error.WriteLine($"error: {e.Message}");
                 return 2;
             }
-            catch (Exception e) when (e is RecordingFormatException || e is BvhFormatException || e is ModelFormatException || e is IOException
+            catch (Exception e) when (e is HeadGait.Study.StudyStorageException || e is RecordingFormatException || e is BvhFormatException || e is ModelFormatException || e is IOException
                                       || e is FormatException || e is InvalidOperationException || e is UnauthorizedAccessException)
             {
                 Console.Error.WriteLine($"error: {e.Message}");

@@ -52,7 +52,7 @@ namespace HeadGait.Cli
                 var gate = GaitTraining.TrainGate(training);
                 var thr = GaitTraining.TrainThreshold(training, map, gate);
                 thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
-                Console.WriteLine($"walking gate (log-odds weights on log spread of SMV, vertical, lateral, forward, SMV change; bias): {gate.Serialize()}");
+                Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g; bias): {gate.Serialize()}");
                 Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
                 var cor = GaitTraining.TrainCorrelation(training, map, gate);
                 cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));

@@ -156,8 +156,8 @@ namespace HeadGait
             int n = window.Length;
             double now = window.EndTime;
             double smv = window.Smv[n - 1];
-            // Standing for a while: forget the walker's peaks, so the floor alone decides the next start.
-            if (!clock.IsWalking(now) && now - clock.LastContactTime > 2.0) peakLevel = 0;
+            // Not walking: forget the walker's peaks, so the floor alone decides the next start.
+            if (!clock.IsWalking(now)) peakLevel = 0;
             double threshold = Threshold;
             if (inStep) currentPeak = Math.Max(currentPeak, smv);
             if (!armed && smv < threshold * settings.RearmFraction)
@@ -165,7 +165,9 @@ namespace HeadGait
                 armed = true;
                 if (inStep)
                 {
-                    peakLevel = peakLevel <= 0 ? currentPeak : 0.7 * peakLevel + 0.3 * currentPeak;
+                    // A head does not bounce harder than about 3 g; larger peaks are knocks, not a walker to follow.
+                    double peak = Math.Min(currentPeak, 30);
+                    peakLevel = peakLevel <= 0 ? peak : 0.7 * peakLevel + 0.3 * peak;
                     inStep = false;
                 }
             }

@@ -23,8 +23,11 @@ namespace HeadGait
         public GaitMetrics ClassifierMetrics;
         /// <summary>Animator output (what the avatar shows) against truth (null without labels).</summary>
         public GaitMetrics AnimatorMetrics;
-        /// <summary>Labelled samples scored (those after the first window).</summary>
+        /// <summary>Labelled samples scored: all from the first window on.</summary>
         public int ScoredSamples;
+
+        /// <summary>Labelled samples before the first window (nothing to show yet): not scored.</summary>
+        public int UnscoredSamples;
         public Dictionary<LocomotionState, int> StateCounts = new Dictionary<LocomotionState, int>();
         public List<GaitPrediction> Predictions = new List<GaitPrediction>();
         public List<AnimatorFrame> Frames = new List<AnimatorFrame>();
@@ -110,8 +113,8 @@ namespace HeadGait
             {
                 while (j + 1 < predictions.Count && predictions[j + 1].Time <= times[i] + 1e-9) j++;
                 if (j < 0) continue;
-                // After a gap the stream restarts; score only samples that a recent window covers.
-                if (times[i] - predictions[j].Time > 0.1) continue;
+                // Once the first window is out, every labelled sample is scored against what the avatar shows then, even
+                // when no window has come for a while: a frozen stream must show up in the scores, not drop out of them.
                 st.Add(times[i]);
                 sl.Add(tl[i]);
                 sr.Add(tr[i]);
@@ -121,6 +124,7 @@ namespace HeadGait
                 ar.Add(frames[j].Right);
             }
             result.ScoredSamples = st.Count;
+            result.UnscoredSamples = times.Count - st.Count;
             if (st.Count == 0) return result;
             result.ClassifierMetrics = GaitMetrics.Compute(st, sl, sr, pl, pr);
             result.AnimatorMetrics = GaitMetrics.Compute(st, sl, sr, al, ar);
