@@ -55,8 +55,9 @@ for (const kind of ['blstm', 'svm']) {
     console.log(`${onnxPath}: ${rows} reference windows, max |probability difference| ${worst.toExponential(2)} ${ok ? 'ok' : 'FAIL (limit 1e-5)'}`);
     if (!ok) failed++;
   } else {
-    // scikit-learn decides in float64, the ONNX graph in float32 (Sentis runs float32): decision values agree to 1e-4 of
-    // their range, and every reference window gets the same class.
+    // scikit-learn decides in float64, the ONNX graph in float32 (Sentis runs float32). A decision value sums thousands
+    // of cancelling kernel terms (C = 100), so float32 keeps it to about 1e-4 of the range, not better: agree to 1e-3 of
+    // the range, and every reference window must get the same class.
     let worst = 0, range = 0, wrong = 0;
     for (let i = 0; i < rows * width; i++) {
       worst = Math.max(worst, Math.abs(out.decision.data[i] - ref.outputs.data[i]));
@@ -68,7 +69,7 @@ for (const kind of ['blstm', 'svm']) {
       for (let j = 1; j < k; j++) if (out.votes.data[r * k + j] > out.votes.data[r * k + best]) best = j;
       if (best !== ref.predictions.data[r]) wrong++;
     }
-    const ok = worst <= 1e-4 * Math.max(1, range) && wrong === 0;
+    const ok = worst <= 1e-3 * Math.max(1, range) && wrong === 0;
     console.log(`${onnxPath}: ${rows} reference windows, max |decision difference| ${worst.toExponential(2)} of range ${range.toFixed(2)}, ${wrong} different classes ${ok ? 'ok' : 'FAIL'}`);
     if (!ok) failed++;
   }

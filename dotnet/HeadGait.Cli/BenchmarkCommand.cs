@@ -22,17 +22,19 @@ namespace HeadGait.Cli
             var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a comma-separated list or all", DefaultValueFactory = _ => "all" };
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
             var perFold = new Option<bool>("--per-fold") { Description = "also print each fold's rows" };
+            var pose = new Option<string[]>("--pose") { Description = "head-pose recordings of the same clips (e.g. ../shared/data/pose-train): each fold's classifiers also score the pose recordings of its held-out clips through the XR pose path", AllowMultipleArgumentsPerToken = true };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold,
+                data, models, cvModels, cv, classifier, augment, perFold, pose,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths)
         {
+            var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
             string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
@@ -44,6 +46,7 @@ namespace HeadGait.Cli
                 if (scheme == "none") continue;
                 var folds = CrossValidation.Make(scheme, byName.Keys);
                 var pooled = names.ToDictionary(n => n, n => new List<ReplayResult>());
+                var pooledPose = names.ToDictionary(n => n, n => new List<ReplayResult>());
                 var foldRows = new List<(string fold, string clf, List<ReplayResult> results)>();
                 var missing = new List<string>();
                 foreach (var fold in folds)
@@ -71,6 +74,8 @@ namespace HeadGait.Cli
                         var results = test.Select(r => ReplayEvaluator.Run(r, foldModels.Create(name, out _))).ToList();
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
+                        foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
+                            pooledPose[name].Add(ReplayEvaluator.Run(p, foldModels.Create(name, out _)));
                     }
                 }
                 Console.WriteLine();
@@ -86,12 +91,35 @@ namespace HeadGait.Cli
                 Report.StepHeader();
                 if (perFold) foreach (var row in foldRows) Report.StepRows(row.fold, row.clf, row.results);
                 foreach (var name in names.Where(n => pooled[n].Count > 0)) Report.StepRows($"{scheme} CV pooled", pooled[name][0].Classifier, pooled[name]);
+                if (poses.Count > 0)
+                {
+                    Console.WriteLine();
+                    Console.WriteLine($"The same folds on {pooledPose.Values.Max(l => l.Count) / Math.Max(1, names.Count(n => pooledPose[n].Count > 0)) } head-pose recordings of held-out clips, through the XR pose path (tracked pose differentiated twice):");
+                    Report.PhaseHeader();
+                    foreach (var name in names.Where(n => pooledPose[n].Count > 0))
+                        foreach (var rate in pooledPose[name].GroupBy(r => RateOf(r.Recording)).OrderBy(g => g.Key))
+                            Report.PhaseRow($"pose {rate.Key}", rate.First().Classifier, rate.ToList());
+                    foreach (var name in names.Where(n => pooledPose[n].Count > 0)) Report.PhaseRow($"pose {scheme} pooled", pooledPose[name][0].Classifier, pooledPose[name]);
+                    // The accelerometer path on exactly the clips the pose recordings come from, for a like-for-like comparison.
+                    var clips = new HashSet<string>(poses.Select(p => CrossValidation.ClipOf(p.Name)));
+                    foreach (var name in names.Where(n => pooledPose[n].Count > 0))
+                        Report.PhaseRow($"accel same clips", pooled[name][0].Classifier, pooled[name].Where(r => clips.Contains(r.Recording)).ToList());
+                    Console.WriteLine();
+                    Report.StepHeader();
+                    foreach (var name in names.Where(n => pooledPose[n].Count > 0)) Report.StepRows($"pose {scheme} pooled", pooledPose[name][0].Classifier, pooledPose[name]);
+                }
             }
             Console.WriteLine();
             Report.Legend();
             Console.WriteLine();
             PrintCost(folder, names, recordings);
             return 0;
+        }
+
+        static string RateOf(string recording)
+        {
+            int us = recording.LastIndexOf('_');
+            return us >= 0 && recording.EndsWith("hz", StringComparison.Ordinal) ? recording.Substring(us + 1) : "?";
         }
 
         /// <summary>CPU time and allocation of each classifier with the models in the folder, on walking recordings.</summary>

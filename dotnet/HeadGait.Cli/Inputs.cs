@@ -31,10 +31,11 @@ namespace HeadGait.Cli
             return list;
         }
 
+        /// <summary>Acceleration recordings as they are; head-pose recordings through the XR pose path (PoseCsv.ToAcceleration).</summary>
         public static List<Recording> LoadRecordings(IEnumerable<string> files, bool strict)
         {
             var list = new List<Recording>();
-            foreach (var f in files) list.Add(RecordingCsv.Load(f, strict));
+            foreach (var f in files) list.Add(PoseCsv.IsPoseFile(f) ? PoseCsv.ToAcceleration(f, strict) : RecordingCsv.Load(f, strict));
             return list;
         }
     }

@@ -124,7 +124,7 @@ namespace HeadGait.Tests
         }
 
         /// <summary>A hostile prefix of about 8 s, then clean generated walking on a clock continuing after it.</summary>
-        static List<ImuSample> Adversarial(int seed, out double walkStart)
+        static List<ImuSample> Adversarial(int seed, out int walkIndex)
         {
             var r = new DeterministicRandom((ulong)(1000 + seed));
             var s = new List<ImuSample>();
@@ -147,7 +147,7 @@ namespace HeadGait.Tests
             }
             double resume = Math.Max(t, s.Count > 0 ? s[s.Count - 1].Time : 0) + 0.01;
             var walk = WalkingStreamGenerator.Generate("walk", GaitSubject.Random(50 + (ulong)seed), new StreamScript().Walk(12, Foot.Left), 7 + (ulong)seed);
-            walkStart = resume;
+            walkIndex = s.Count;
             double t0 = walk.Samples[0].Imu.Time;
             foreach (var w in walk.Samples) s.Add(new ImuSample(resume + w.Imu.Time - t0, w.Imu.X, w.Imu.Y, w.Imu.Z));
             return s;
@@ -167,14 +167,16 @@ namespace HeadGait.Tests
             var late = new List<string>();
             for (int k = 0; k < streams; k++)
             {
-                var samples = Adversarial(k, out double walkStart);
+                var samples = Adversarial(k, out int walkIndex);
+                double walkStart = samples[walkIndex].Time;
                 var pipeline = new GaitPipeline(models.Create(name, out _));
                 double seen = double.NaN;
-                foreach (var s in samples)
+                for (int i = 0; i < samples.Count; i++)
                 {
-                    pipeline.Push(s);
+                    pipeline.Push(samples[i]);
                     var p = pipeline.LatestPrediction;
-                    if (double.IsNaN(seen) && s.Time >= walkStart && p.IsWalking && p.Time >= walkStart) seen = p.Time - walkStart;
+                    // The hostile clock may have visited later times than the walk's: only the walk's own samples count.
+                    if (double.IsNaN(seen) && i >= walkIndex && p.IsWalking && p.Time >= walkStart) seen = p.Time - walkStart;
                     Assert.That(double.IsNaN(pipeline.Latest.StridePosition), Is.False);
                 }
                 if (double.IsNaN(seen)) stuck++;

@@ -46,17 +46,23 @@ namespace HeadGait.Tests
                 t += 1 / 72.0 + 0.001 * (rnd.NextDouble() - 0.5);
                 double px = 1.3 * t, py = 1.7 + 0.02 * Math.Sin(w1 * t), pz = 0.015 * Math.Sin(w2 * t);
                 if (!e.Push(t, px, py, pz, q[0], q[1], q[2], q[3], out var s)) continue;
-                double ts = s.Time;
-                double up = -0.02 * w1 * w1 * Math.Sin(w1 * ts) + G;
+                // Each sample describes the motion Lag before its stamp (the middle of the fitted poses).
+                Assert.That(s.Time, Is.EqualTo(t));
+                Assert.That(e.Lag, Is.InRange(0.025, 0.05));
+                double tm = s.Time - e.Lag;
+                double up = -0.02 * w1 * w1 * Math.Sin(w1 * tm) + G;
                 double along = 0;                                   // constant speed forward
-                double sideZ = -0.015 * w2 * w2 * Math.Sin(w2 * ts); // along Unity +z = the head's left when facing +x
+                double sideZ = -0.015 * w2 * w2 * Math.Sin(w2 * tm); // along Unity +z = the head's left when facing +x
                 worst = Math.Max(worst, Math.Abs(s.Z - up));
                 worst = Math.Max(worst, Math.Abs(s.X - along));
                 worst = Math.Max(worst, Math.Abs(s.Y - sideZ));
                 n++;
             }
-            Assert.That(n, Is.EqualTo(398));
-            Assert.That(worst, Is.LessThan(0.05));
+            // Five poses (56 ms at 72 Hz) span enough of the fit window for the first estimate.
+            Assert.That(n, Is.EqualTo(396));
+            TestContext.WriteLine($"worst error {worst:F3} m/s^2 of a {0.02 * w1 * w1:F2} m/s^2 bob");
+            // The quadratic fit flattens a sinusoid over its 85 ms window a little (2-3 % of the bob at 1.9 Hz).
+            Assert.That(worst, Is.LessThan(0.1));
         }
 
         [Test]
@@ -66,19 +72,19 @@ namespace HeadGait.Tests
             var outs = new List<double>();
             void Push(double t, double y)
             {
-                if (e.Push(t, 0, y, 0, 0, 0, 0, 1, out var s)) outs.Add(s.Time);
+                if (e.Push(t, 0, y, 0, 0, 0, 0, 1, out var s)) outs.Add(Math.Round(s.Time, 6));
             }
             Push(0.00, 1.7);
             Push(0.01, double.NaN);
             Push(0.01, 1.7);
             Push(0.005, 1.7);   // backwards
-            Push(0.02, 1.7);
-            Assert.That(outs, Is.EqualTo(new[] { 0.01 }));
-            Push(0.50, 1.7);    // hole: start again
-            Push(0.51, 1.7);
+            for (int i = 2; i <= 6; i++) Push(i / 100.0, 1.7);
+            // At 100 Hz the first estimate needs seven poses (an odd count spanning half the 85 ms window).
+            Assert.That(outs, Is.EqualTo(new[] { 0.06 }));
+            for (int i = 0; i < 6; i++) Push(0.50 + i / 100.0, 1.7);   // a hole: start again
             Assert.That(outs.Count, Is.EqualTo(1));
-            Push(0.52, 1.7);
-            Assert.That(outs, Is.EqualTo(new[] { 0.01, 0.51 }));
+            Push(0.56, 1.7);
+            Assert.That(outs, Is.EqualTo(new[] { 0.06, 0.56 }));
             Assert.That(e.Skipped, Is.EqualTo(2));
         }
     }

@@ -418,15 +418,8 @@ namespace HeadGait
                 var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
                 cor.ContactDetected += (t, e, r, k) => detections.Add((t, r, k));
                 foreach (var s in rec.Samples) pre.Push(s.Imu, w => cor.Classify(w));
-                PhaseEvents.ExtractTruth(rec, out var times, out var left, out var right);
-                var contacts = PhaseEvents.Contacts(times, left, right);
-                foreach (var d in detections)
-                {
-                    double nearest = double.PositiveInfinity;
-                    foreach (var c in contacts)
-                        if (Math.Abs(d.time - c.Time) < Math.Abs(nearest)) nearest = d.time - c.Time;
-                    onContact(nearest, d.r, d.template);
-                }
+                var contacts = PhaseEvents.TruthContacts(rec);
+                foreach (var d in detections) onContact(PhaseEvents.OffsetFromNearest(contacts, d.time), d.r, d.template);
             }
         }
     }

@@ -253,13 +253,10 @@ namespace HeadGait
                 thr.ContactDetected += (t, e) => detections.Add(t);
                 var pre = new StreamPreprocessor();
                 foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
-                PhaseEvents.ExtractTruth(rec, out var times, out var left, out var right);
-                var contacts = PhaseEvents.Contacts(times, left, right);
+                var contacts = PhaseEvents.TruthContacts(rec);
                 foreach (var d in detections)
                 {
-                    double nearest = double.PositiveInfinity;
-                    foreach (var c in contacts)
-                        if (Math.Abs(d - c.Time) < Math.Abs(nearest)) nearest = d - c.Time;
+                    double nearest = PhaseEvents.OffsetFromNearest(contacts, d);
                     if (Math.Abs(nearest) <= 0.2) lags.Add(nearest);
                 }
             }
@@ -274,8 +271,7 @@ namespace HeadGait
             foreach (var rec in list)
             {
                 var raw = new RawSignal(rec);
-                PhaseEvents.ExtractTruth(rec, out var times, out var left, out var right);
-                foreach (var c in PhaseEvents.Contacts(times, left, right))
+                foreach (var c in PhaseEvents.TruthContacts(rec))
                 {
                     double end = c.Time + s.ContactLag, mean = 0;
                     for (int i = 0; i < segment.Length; i++) mean += segment[i] = raw.Lateral(end - (segment.Length - 1 - i) * 0.01);

@@ -33,11 +33,15 @@ namespace HeadGait
         public const string ByStyle = "style";
         public const string ByFile = "file";
 
-        static readonly Regex StyledName = new Regex(@"^(?<corpus>[A-Za-z0-9]+)_(?:neg_)?[^_]+_(?<style>[^_]+)_\d+$");
+        static readonly Regex StyledName = new Regex(@"^(?<corpus>[A-Za-z0-9]+)_(?:neg_)?[^_]+_(?<style>[^_]+)_\d+(?:_\d+hz)?$");
+        static readonly Regex RateSuffix = new Regex(@"_\d+hz$");
+
+        /// <summary>The clip a recording was made from: a pose recording "bn_tl_act_006_72hz" comes from "bn_tl_act_006".</summary>
+        public static string ClipOf(string recording) => RateSuffix.Replace(recording ?? "", "");
 
         /// <summary>
         /// The style group of a recording name: "corpus/style" for names like <c>bn_wk_act_001</c>,
-        /// <c>bn_neg_wl_fem_002</c> or <c>bn1_walk-back_giant_001</c>; otherwise the name itself (its own group).
+        /// <c>bn_neg_wl_fem_002</c>, <c>bn1_walk-back_giant_001</c> or <c>bn_tl_act_006_72hz</c>; otherwise the name itself.
         /// </summary>
         public static string StyleOf(string recording)
         {

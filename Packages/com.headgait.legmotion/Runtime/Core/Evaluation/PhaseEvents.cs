@@ -62,6 +62,22 @@ namespace HeadGait
             return list;
         }
 
+        /// <summary>The true foot contacts of a recording (see <see cref="Contacts"/>).</summary>
+        public static List<PhaseOnset> TruthContacts(Recording recording)
+        {
+            ExtractTruth(recording, out var times, out var left, out var right);
+            return Contacts(times, left, right);
+        }
+
+        /// <summary>Signed time from the nearest of the contacts to <paramref name="time"/> (infinity when there are none).</summary>
+        public static double OffsetFromNearest(List<PhaseOnset> contacts, double time)
+        {
+            double nearest = double.PositiveInfinity;
+            foreach (var c in contacts)
+                if (Math.Abs(time - c.Time) < Math.Abs(nearest)) nearest = time - c.Time;
+            return nearest;
+        }
+
         /// <summary>Truth onsets of a recording, using only labelled rows with finite, increasing timestamps.</summary>
         public static List<PhaseOnset> TruthOnsets(Recording recording)
         {

@@ -45,7 +45,7 @@ namespace HeadGait
         {
             if (recording == null) throw new ArgumentNullException(nameof(recording));
             classifier.Reset();
-            var pipeline = new GaitPipeline(classifier, preprocessorSettings, animatorSettings);
+            var pipeline = new GaitPipeline(classifier, preprocessorSettings, animatorSettings) { SourceLag = recording.SourceLag };
             var predictions = new List<GaitPrediction>();
             var frames = new List<AnimatorFrame>();
             pipeline.FrameProduced += (p, f) =>

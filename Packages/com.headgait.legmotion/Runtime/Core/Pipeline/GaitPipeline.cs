@@ -36,6 +36,12 @@ namespace HeadGait
         public GaitAnimatorStateMachine Animator => animator;
 
         public GaitPrediction LatestPrediction { get; private set; }
+
+        /// <summary>
+        /// How late the samples describe the motion (s): 0 for an accelerometer, <see cref="PoseAccelerationEstimator.Lag"/>
+        /// for acceleration derived from the tracked pose. Walking predictions are moved that far ahead before the animator.
+        /// </summary>
+        public double SourceLag { get; set; }
         public AnimatorFrame Latest { get; private set; }
         public long Windows { get; private set; }
 
@@ -54,6 +60,7 @@ namespace HeadGait
                 // freeze mid-stride until the next full window.
                 classifier.Reset();
                 animator.Reset();
+                LatestPrediction = GaitPrediction.Standing(sample.Time);
                 Latest = new AnimatorFrame(sample.Time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
             }
             return outcome;
@@ -66,6 +73,7 @@ namespace HeadGait
             stopwatch.Start();
             var prediction = classifier.Classify(window);
             stopwatch.Stop();
+            if (SourceLag != 0) prediction = prediction.Advanced(SourceLag, classifier.PhaseMap);
             LatestPrediction = prediction;
             Latest = animator.Update(prediction);
             Windows++;
@@ -77,6 +85,8 @@ namespace HeadGait
             preprocessor.Reset();
             classifier.Reset();
             animator.Reset();
+            LatestPrediction = default;
+            Latest = new AnimatorFrame(0, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
         }
     }
 }

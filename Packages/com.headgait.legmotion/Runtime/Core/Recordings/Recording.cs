@@ -51,6 +51,12 @@ namespace HeadGait
         /// <summary>Rows the reader skipped, with their line numbers and why.</summary>
         public List<string> Warnings { get; }
 
+        /// <summary>
+        /// How late the samples describe the motion (s): 0 for an accelerometer, the estimator's lag for acceleration
+        /// derived from a tracked pose. Replays set <see cref="GaitPipeline.SourceLag"/> from it.
+        /// </summary>
+        public double SourceLag { get; set; }
+
         /// <summary>key=value pairs from '# key=value' comment lines.</summary>
         public Dictionary<string, string> Metadata { get; }
 

@@ -3,35 +3,57 @@ using System;
 namespace HeadGait
 {
     /// <summary>
-    /// Accelerometer stand-in for headsets whose runtime reports the head pose but not its acceleration
-    /// (common with OpenXR): the tracked position is differentiated twice (non-uniform central difference),
-    /// gravity is added and the result is rotated into the head frame. Poses are in Unity's tracking space
-    /// (x right, y up, z forward; rotation as a unit quaternion x, y, z, w). Each output belongs to the
-    /// previous pose, so it arrives one frame late. Differentiation amplifies tracking noise: prefer a real
-    /// accelerometer where the runtime has one.
+    /// Accelerometer stand-in for headsets whose runtime reports the head pose but not its acceleration (OpenXR, most
+    /// standalone headsets): the tracked position is differentiated twice, gravity added and the result rotated into the
+    /// head frame. Poses are in Unity's tracking space (x right, y up, z forward; rotation a unit quaternion x, y, z, w
+    /// mapping the camera's axes into it).
+    /// <para>
+    /// Tracking noise of half a millimetre becomes metres per second squared when differentiated twice over one frame,
+    /// so the acceleration comes from a least-squares quadratic fitted to the positions of the last
+    /// <see cref="WindowSeconds"/> (any frame rate, uneven frame times) and belongs to the middle of that window. Each
+    /// sample is stamped with the newest pose's time, when it became known; <see cref="Lag"/> says how far behind that
+    /// the motion it describes is, so the pipeline can look ahead by as much (<see cref="GaitPipeline.SourceLag"/>).
+    /// </para>
     /// </summary>
     public sealed class PoseAccelerationEstimator
     {
+        public const double DefaultWindowSeconds = 0.085;
+        const int Capacity = 64;
+
         readonly double gravity;
         readonly double maxGap;
-        readonly double[] t = new double[3];
-        readonly double[,] p = new double[3, 3];
-        readonly double[,] q = new double[3, 4];
-        int count;
+        readonly double[] t = new double[Capacity];
+        readonly double[,] p = new double[Capacity, 3];
+        readonly double[,] q = new double[Capacity, 4];
+        int count, head;
 
-        public PoseAccelerationEstimator(double gravity = 9.80665, double maxGap = 0.1)
+        public PoseAccelerationEstimator(double gravity = 9.80665, double maxGap = 0.1, double windowSeconds = DefaultWindowSeconds)
         {
+            if (!(windowSeconds > 0 && windowSeconds < 1)) throw new ArgumentException("The fit window must be between 0 and 1 s.", nameof(windowSeconds));
             this.gravity = gravity;
             this.maxGap = maxGap;
+            WindowSeconds = windowSeconds;
         }
+
+        /// <summary>Span of poses each acceleration is fitted to (s).</summary>
+        public double WindowSeconds { get; }
 
         public int Skipped { get; private set; }
 
-        public void Reset() => count = 0;
+        /// <summary>How far the last sample's motion lies behind its timestamp (s): half the fit window, about 42 ms.</summary>
+        public double Lag { get; private set; }
+
+        public void Reset()
+        {
+            count = 0;
+            head = 0;
+        }
+
+        int Index(int back) => (head - 1 - back + 2 * Capacity) % Capacity;
 
         /// <summary>
-        /// Adds a pose; returns true with the head-frame specific force at the previous pose's time once three
-        /// poses are at hand. Non-finite values and non-increasing times are skipped; a hole over maxGap restarts.
+        /// Adds a pose; returns true with the head-frame specific force (x forward, y left, z up) once the poses span the
+        /// fit window. Non-finite values and non-increasing times are skipped; a hole over maxGap starts over.
         /// </summary>
         public bool Push(double time, double px, double py, double pz, double qx, double qy, double qz, double qw, out ImuSample sample)
         {
@@ -44,44 +66,58 @@ namespace HeadGait
             }
             if (count > 0)
             {
-                double last = t[Math.Min(count, 3) - 1];
+                double last = t[Index(0)];
                 if (!(time > last))
                 {
                     Skipped++;
                     return false;
                 }
-                if (time - last > maxGap) count = 0;
+                if (time - last > maxGap) Reset();
             }
-            if (count == 3)
-            {
-                for (int i = 0; i < 2; i++)
-                {
-                    t[i] = t[i + 1];
-                    for (int k = 0; k < 3; k++) p[i, k] = p[i + 1, k];
-                    for (int k = 0; k < 4; k++) q[i, k] = q[i + 1, k];
-                }
-                count = 2;
-            }
-            t[count] = time;
-            p[count, 0] = px;
-            p[count, 1] = py;
-            p[count, 2] = pz;
-            q[count, 0] = qx / qn;
-            q[count, 1] = qy / qn;
-            q[count, 2] = qz / qn;
-            q[count, 3] = qw / qn;
-            count++;
-            if (count < 3) return false;
+            t[head] = time;
+            p[head, 0] = px;
+            p[head, 1] = py;
+            p[head, 2] = pz;
+            q[head, 0] = qx / qn;
+            q[head, 1] = qy / qn;
+            q[head, 2] = qz / qn;
+            q[head, 3] = qw / qn;
+            head = (head + 1) % Capacity;
+            if (count < Capacity) count++;
 
-            double h0 = t[1] - t[0], h1 = t[2] - t[1];
-            var a = new double[3];
-            for (int k = 0; k < 3; k++)
-                a[k] = 2.0 * ((p[2, k] - p[1, k]) / h1 - (p[1, k] - p[0, k]) / h0) / (h0 + h1);
-            // Specific force in tracking space (Unity y is up), then into the head's local Unity axes.
-            double fx = a[0], fy = a[1] + gravity, fz = a[2];
-            RotateByInverse(q[1, 0], q[1, 1], q[1, 2], q[1, 3], ref fx, ref fy, ref fz);
+            // The poses of the last WindowSeconds (at least five): an odd number, so one of them is the middle.
+            int n = 1;
+            while (n < count && time - t[Index(n)] <= WindowSeconds + 1e-9) n++;
+            if (n % 2 == 0) n--;
+            if (n < 5 || time - t[Index(n - 1)] < 0.5 * WindowSeconds) return false;
+            int centre = Index(n / 2);
+            double tc = t[centre];
+            // Least squares x(t) = a + b (t - tc) + c (t - tc)^2; the acceleration is 2c.
+            double s0 = n, s1 = 0, s2 = 0, s3 = 0, s4 = 0;
+            double y0x = 0, y1x = 0, y2x = 0, y0y = 0, y1y = 0, y2y = 0, y0z = 0, y1z = 0, y2z = 0;
+            for (int k = 0; k < n; k++)
+            {
+                int i = Index(k);
+                double d = t[i] - tc, d2 = d * d;
+                s1 += d;
+                s2 += d2;
+                s3 += d2 * d;
+                s4 += d2 * d2;
+                y0x += p[i, 0]; y1x += p[i, 0] * d; y2x += p[i, 0] * d2;
+                y0y += p[i, 1]; y1y += p[i, 1] * d; y2y += p[i, 1] * d2;
+                y0z += p[i, 2]; y1z += p[i, 2] * d; y2z += p[i, 2] * d2;
+            }
+            // Cramer's rule for the quadratic coefficient of the 3x3 normal equations.
+            double det = s0 * (s2 * s4 - s3 * s3) - s1 * (s1 * s4 - s3 * s2) + s2 * (s1 * s3 - s2 * s2);
+            if (Math.Abs(det) < 1e-30) return false;
+            double C(double y0, double y1, double y2) => (s0 * (s2 * y2 - s3 * y1) - s1 * (s1 * y2 - s3 * y0) + s2 * (s1 * y1 - s2 * y0)) / det;
+            double ax = 2 * C(y0x, y1x, y2x), ay = 2 * C(y0y, y1y, y2y), az = 2 * C(y0z, y1z, y2z);
+            // Specific force in tracking space (Unity y is up), then into the head's local Unity axes at the middle pose.
+            double fx = ax, fy = ay + gravity, fz = az;
+            RotateByInverse(q[centre, 0], q[centre, 1], q[centre, 2], q[centre, 3], ref fx, ref fy, ref fz);
             // Unity local (right, up, forward) -> head frame (forward, left, up).
-            sample = new ImuSample(t[1], fz, -fx, fy);
+            sample = new ImuSample(time, fz, -fx, fy);
+            Lag = time - tc;
             return true;
         }
 

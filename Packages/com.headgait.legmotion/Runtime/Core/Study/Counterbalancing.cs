@@ -53,13 +53,7 @@ namespace HeadGait.Study
             int end = participantId.Length, start = end;
             while (start > 0 && char.IsDigit(participantId[start - 1])) start--;
             if (start < end && end - start <= 9) return (int)((long.Parse(participantId.Substring(start, end - start)) + rows - 1) % rows);
-            ulong h = 1469598103934665603UL;
-            foreach (char c in participantId)
-            {
-                h ^= c;
-                h *= 1099511628211UL;
-            }
-            return (int)(h % (ulong)rows);
+            return (int)(Synthetic.DeterministicRandom.SeedFrom(participantId) % (ulong)rows);
         }
 
         /// <summary>The condition order (indices into the conditions) of a participant.</summary>

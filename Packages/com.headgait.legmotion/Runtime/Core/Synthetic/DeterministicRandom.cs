@@ -14,6 +14,21 @@ namespace HeadGait.Synthetic
             state = seed;
         }
 
+        /// <summary>
+        /// A seed from a name (FNV-1a): the same on every runtime and independent of the order things are listed in, so a
+        /// recording's augmentation or a participant's row depends on its name alone.
+        /// </summary>
+        public static ulong SeedFrom(string name)
+        {
+            ulong h = 1469598103934665603UL;
+            foreach (char c in name ?? "")
+            {
+                h ^= c;
+                h *= 1099511628211UL;
+            }
+            return h == 0 ? 1 : h;
+        }
+
         public ulong NextULong()
         {
             ulong z = state += 0x9E3779B97F4A7C15UL;

@@ -18,7 +18,7 @@ namespace HeadGait.Training
             foreach (var rec in recordings)
             {
                 if (!rec.HasTruth) continue;
-                var random = new DeterministicRandom(seed ^ Hash(rec.Name));
+                var random = new DeterministicRandom(seed ^ DeterministicRandom.SeedFrom(rec.Name));
                 for (int k = 0; k < copies; k++) list.Add(RecordingAugmentation.Augment(rec, random));
             }
             return list;
@@ -60,18 +60,6 @@ namespace HeadGait.Training
             foreach (var rec in training) parts.Add(ReplayEvaluator.Run(rec, make()).ClassifierMetrics);
             double ms = GaitMetrics.Pool(parts).StepTimingMeanMs;
             return double.IsNaN(ms) ? 0 : System.Math.Max(-0.2, System.Math.Min(0.2, ms / 1000));
-        }
-
-        /// <summary>FNV-1a of a name: a per-recording seed that does not depend on the order recordings are listed in.</summary>
-        public static ulong Hash(string s)
-        {
-            ulong h = 1469598103934665603UL;
-            foreach (char c in s ?? "")
-            {
-                h ^= c;
-                h *= 1099511628211UL;
-            }
-            return h;
         }
     }
 }

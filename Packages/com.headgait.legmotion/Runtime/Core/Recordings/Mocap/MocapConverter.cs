@@ -105,7 +105,7 @@ namespace HeadGait.Mocap
                 sensor[k] = SecondDerivative(filter.FilterForwardBackward(Resample(frameTimes, v, n, dt)), dt);
             }
 
-            var random = new DeterministicRandom(s.Seed != 0 ? s.Seed : Hash(bvh.Name));
+            var random = new DeterministicRandom(s.Seed != 0 ? s.Seed : DeterministicRandom.SeedFrom(bvh.Name));
             var bias = new Vec3(random.NextGaussian() * s.BiasSd, random.NextGaussian() * s.BiasSd, random.NextGaussian() * s.BiasSd);
             var labelsLeft = FootLabels(pose, frameTimes, leftFoot, leftToe, up, scale, filter, n, dt, s, out var contactLeft);
             var labelsRight = FootLabels(pose, frameTimes, rightFoot, rightToe, up, scale, filter, n, dt, s, out var contactRight);
@@ -322,17 +322,6 @@ namespace HeadGait.Mocap
             for (int i = 0; i < n && !anyStep; i++) anyStep = !left[i] || !right[i];
             for (int i = 0; i < n; i++) walking[i] = anyStep && !standing[i];
             return walking;
-        }
-
-        static ulong Hash(string s)
-        {
-            ulong h = 1469598103934665603UL;
-            foreach (char c in s ?? "")
-            {
-                h ^= c;
-                h *= 1099511628211UL;
-            }
-            return h == 0 ? 1 : h;
         }
     }
 }

@@ -1,0 +1,100 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Text;
+
+namespace HeadGait
+{
+    /// <summary>One tracked head pose in Unity's tracking space: left-handed, y up, metres; rotation x, y, z, w.</summary>
+    public readonly struct PoseSample
+    {
+        public PoseSample(double time, double px, double py, double pz, double qx, double qy, double qz, double qw)
+        {
+            Time = time;
+            Px = px;
+            Py = py;
+            Pz = pz;
+            Qx = qx;
+            Qy = qy;
+            Qz = qz;
+            Qw = qw;
+        }
+
+        public double Time { get; }
+        public double Px { get; }
+        public double Py { get; }
+        public double Pz { get; }
+        public double Qx { get; }
+        public double Qy { get; }
+        public double Qz { get; }
+        public double Qw { get; }
+    }
+
+    /// <summary>
+    /// Head-pose recordings, as an XR runtime reports the head (for headsets without an accelerometer reading):
+    /// <code>
+    /// # headgait-pose v1
+    /// timestamp_s,pos_x,pos_y,pos_z,rot_x,rot_y,rot_z,rot_w,phase_left,phase_right
+    /// </code>
+    /// Unity tracking space (left-handed, y up, metres; the rotation maps the camera's axes, x right, y up, z forward,
+    /// into tracking space); labels as in acceleration recordings. Replayed through <see cref="ToAcceleration"/>, which
+    /// is what the XR pose source does live.
+    /// </summary>
+    public static class PoseCsv
+    {
+        public const string Magic = "# headgait-pose v1";
+        public static readonly string[] RequiredColumns = { "timestamp_s", "pos_x", "pos_y", "pos_z", "rot_x", "rot_y", "rot_z", "rot_w" };
+
+        /// <summary>Largest position magnitude read (m): tracking spaces are rooms, not continents.</summary>
+        public const double MaxPosition = 10000;
+
+        /// <summary>True when the file starts with the pose magic line (after any byte-order mark).</summary>
+        public static bool IsPoseFile(string path)
+        {
+            using (var reader = new StreamReader(path, Encoding.UTF8))
+            {
+                string first = reader.ReadLine();
+                return first != null && first.TrimStart('\uFEFF').Trim() == Magic;
+            }
+        }
+
+        /// <summary>Reads a pose recording; bad rows are skipped with warnings, or throw in strict mode.</summary>
+        public static List<(PoseSample pose, GaitPhase? left, GaitPhase? right, int line)> Load(string path, bool strict, out List<string> warnings)
+        {
+            if (!File.Exists(path)) throw new FileNotFoundException($"Pose recording not found: {path}", path);
+            var rows = new List<(PoseSample, GaitPhase?, GaitPhase?, int)>();
+            using (var reader = new StreamReader(path, Encoding.UTF8))
+            {
+                var limits = new[] { RecordingCsv.MaxTimestamp, MaxPosition, MaxPosition, MaxPosition, 2, 2, 2, 2 };
+                var units = new[] { "s", "m", "m", "m", "", "", "", "" };
+                var table = LabelledCsv.Read(reader, Path.GetFileNameWithoutExtension(path), strict, RequiredColumns, limits, units,
+                    (v, line, l, r) => rows.Add((new PoseSample(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), l, r, line)));
+                warnings = table.Warnings;
+            }
+            return rows;
+        }
+
+        /// <summary>
+        /// The acceleration recording a pose recording becomes through the XR pose path: each pose through a
+        /// <see cref="PoseAccelerationEstimator"/>, each sample labelled with its newest pose's labels (the moment the avatar
+        /// shows it) and the estimator's mean lag in <see cref="Recording.SourceLag"/>.
+        /// </summary>
+        public static Recording ToAcceleration(string path, bool strict = false)
+        {
+            var rows = Load(path, strict, out var warnings);
+            var estimator = new PoseAccelerationEstimator();
+            var samples = new List<RecordedSample>();
+            double lagSum = 0;
+            foreach (var (pose, left, right, line) in rows)
+            {
+                if (!estimator.Push(pose.Time, pose.Px, pose.Py, pose.Pz, pose.Qx, pose.Qy, pose.Qz, pose.Qw, out var imu)) continue;
+                lagSum += estimator.Lag;
+                samples.Add(left.HasValue ? new RecordedSample(imu, left.Value, right.Value, line) : new RecordedSample(imu, line));
+            }
+            var rec = new Recording(Path.GetFileNameWithoutExtension(path), samples, warnings);
+            rec.SourceLag = samples.Count > 0 ? lagSum / samples.Count : 0;
+            rec.Metadata["source"] = "head pose through PoseAccelerationEstimator";
+            return rec;
+        }
+    }
+}
