@@ -34,10 +34,12 @@ namespace HeadGait.Cli
             var work = new Option<string>("--work") { Description = "folder for the exported windows (default: a temporary folder)" };
             var python = new Option<string>("--python") { Description = "Python with torch, scikit-learn and onnx", DefaultValueFactory = _ => "/usr/bin/python3" };
             var exportOnly = new Option<bool>("--export-only") { Description = "export the learned classifiers' windows and stop (for experiments with training/train_learned.py)" };
+            var cvOnly = new Option<bool>("--cv-only") { Description = "train only the cross-validation fold models (--cv), leaving the model folder as it is" };
+            var resume = new Option<bool>("--resume") { Description = "keep fold models an interrupted run finished for the same held-out recordings (same features and settings are assumed)" };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
-                data, output, augment, learned, cv, cvModels, features, stride, lead, work, python, pythonArgs, exportOnly,
+                data, output, augment, learned, cv, cvModels, cvOnly, resume, features, stride, lead, work, python, pythonArgs, exportOnly,
             };
             command.SetAction(parse =>
             {
@@ -48,15 +50,19 @@ namespace HeadGait.Cli
                 var training = GaitTraining.WithAugmentation(recordings, parse.GetValue(augment));
                 var map = PhaseMapTraining.Learn(recordings);
                 Console.WriteLine($"{recordings.Count} labelled recordings, {training.Count - recordings.Count} augmented copies; phase map {map.Serialize()}");
-
-                var gate = GaitTraining.TrainGate(training);
-                var thr = GaitTraining.TrainThreshold(training, map, gate);
-                thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
-                Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g; bias): {gate.Serialize()}");
-                Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
-                var cor = GaitTraining.TrainCorrelation(training, map, gate);
-                cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
-                Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms");
+                bool onlyFolds = parse.GetValue(cvOnly);
+                if (onlyFolds && string.IsNullOrWhiteSpace(parse.GetValue(cv))) throw new UsageException("--cv-only needs --cv");
+                if (!onlyFolds)
+                {
+                    var gate = GaitTraining.TrainGate(training);
+                    var thr = GaitTraining.TrainThreshold(training, map, gate);
+                    thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
+                    Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g; bias): {gate.Serialize()}");
+                    Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
+                    var cor = GaitTraining.TrainCorrelation(training, map, gate);
+                    cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
+                    Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms");
+                }
 
                 string kinds = parse.GetValue(learned);
                 if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase)) return 0;
@@ -72,8 +78,11 @@ namespace HeadGait.Cli
                 string script = FindScript();
                 string py = parse.GetValue(python);
                 string extra = parse.GetValue(pythonArgs);
-                RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{outDir}\" --models {kinds} {extra}");
-                Verify(outDir);
+                if (!onlyFolds)
+                {
+                    RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{outDir}\" --models {kinds} {extra}");
+                    Verify(outDir);
+                }
                 foreach (var scheme in (parse.GetValue(cv) ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
                 {
                     foreach (var fold in CrossValidation.Make(scheme, names))
@@ -81,7 +90,13 @@ namespace HeadGait.Cli
                         string foldDir = Path.Combine(parse.GetValue(cvModels) ?? DefaultCvModels(), scheme, Safe(fold.Name));
                         Directory.CreateDirectory(foldDir);
                         string exclude = Path.Combine(foldDir, "test-recordings.txt");
-                        File.WriteAllLines(exclude, fold.Test.OrderBy(n => n, StringComparer.Ordinal));
+                        var held = fold.Test.OrderBy(n => n, StringComparer.Ordinal).ToArray();
+                        if (parse.GetValue(resume) && FoldFinished(foldDir, exclude, held))
+                        {
+                            Console.WriteLine($"fold {scheme}/{fold.Name}: kept (finished earlier for the same {held.Length} held-out recordings)");
+                            continue;
+                        }
+                        File.WriteAllLines(exclude, held);
                         Console.WriteLine($"fold {scheme}/{fold.Name}: {fold.Test.Count} held-out recordings");
                         RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{foldDir}\" --models {kinds} --exclude \"{exclude}\" --no-onnx {extra}");
                     }
@@ -89,6 +104,18 @@ namespace HeadGait.Cli
                 return 0;
             });
             return command;
+        }
+
+        /// <summary>
+        /// The training script writes Reference~/training.json after every model of a fold: a fold holding it, newer than its
+        /// held-out list and that list unchanged, was finished.
+        /// </summary>
+        static bool FoldFinished(string foldDir, string exclude, string[] held)
+        {
+            string report = Path.Combine(foldDir, "Reference~", "training.json");
+            return File.Exists(report) && File.Exists(exclude)
+                && File.GetLastWriteTimeUtc(report) >= File.GetLastWriteTimeUtc(exclude)
+                && File.ReadAllLines(exclude).SequenceEqual(held);
         }
 
         /// <summary>Augmented copies are named "original~...": they belong to their original's fold.</summary>

@@ -29,10 +29,10 @@ namespace HeadGait.Unity
         [SerializeField] TextAsset corTemplate;
 
         [Header("Animator parameters")]
-        [SerializeField] string stateParameter = "GaitState";
-        [SerializeField] string stridePhaseParameter = "StridePhase";
-        [SerializeField] string walkWeightParameter = "WalkWeight";
-        [SerializeField] string stepPeriodParameter = "StepPeriod";
+        [SerializeField] string stateParameter = AnimatorParameters.State;
+        [SerializeField] string stridePhaseParameter = AnimatorParameters.StridePhase;
+        [SerializeField] string walkWeightParameter = AnimatorParameters.WalkWeight;
+        [SerializeField] string stepPeriodParameter = AnimatorParameters.StepPeriod;
 
         [Header("Animator state machine")]
         [Tooltip("Predictions smoothed (paper: 5).")]
