@@ -16,11 +16,12 @@ namespace HeadGait.Cli
             var units = new Option<string>("--units") { Description = "file units: cm, m, mm, in or auto (from the leg length)", DefaultValueFactory = _ => "auto" };
             var up = new Option<string>("--up") { Description = "world up axis of the files: x, y, z or auto", DefaultValueFactory = _ => "auto" };
             var noNoise = new Option<bool>("--no-noise") { Description = "leave out the simulated sensor bias, noise and timestamp jitter" };
+            var pose = new Option<string>("--pose") { Description = "write head-pose recordings (headgait-pose v1) at these frame rates instead, e.g. 72,90,120: the XR pose path's input, with tracking noise and frame-time jitter" };
             var seed = new Option<ulong>("--seed") { Description = "seed of the sensor errors (default: from each file's name)" };
             var joints = new Dictionary<string, Option<string>>();
             var command = new Command("from-bvh", "Converts BVH motion capture into head-IMU recordings with per-foot gait-phase labels.")
             {
-                inputs, output, units, up, noNoise, seed,
+                inputs, output, units, up, noNoise, seed, pose,
             };
             foreach (var role in MocapConverter.DefaultNames.Keys)
             {
@@ -43,7 +44,8 @@ namespace HeadGait.Cli
                     UpAxis = Axis(parse.GetValue(up)),
                     Seed = parse.GetValue(seed),
                 };
-                if (parse.GetValue(noNoise)) s.BiasSd = s.NoiseSd = s.JitterSd = 0;
+                if (parse.GetValue(noNoise)) s.BiasSd = s.NoiseSd = s.JitterSd = s.PositionNoiseSd = s.RotationNoiseDegrees = s.FrameJitterSd = 0;
+                var rates = FrameRates(parse.GetValue(pose));
                 string outDir = parse.GetValue(output);
                 var files = Inputs.Expand(parse.GetValue(inputs), "*.bvh");
                 int failed = 0;
@@ -51,7 +53,16 @@ namespace HeadGait.Cli
                 {
                     try
                     {
-                        var rec = MocapConverter.Convert(BvhFile.Load(f), s);
+                        var bvh = BvhFile.Load(f);
+                        foreach (double rate in rates)
+                        {
+                            var poses = MocapConverter.ConvertPose(bvh, rate, s);
+                            string posePath = Path.Combine(outDir, poses.Name + ".csv");
+                            PoseCsv.Save(poses, posePath);
+                            Console.WriteLine($"{posePath}: {poses.Rows.Count} poses at {rate:0} Hz");
+                        }
+                        if (rates.Count > 0) continue;
+                        var rec = MocapConverter.Convert(bvh, s);
                         string path = Path.Combine(outDir, rec.Name + ".csv");
                         RecordingCsv.Save(rec, path);
                         int walking = 0;
@@ -67,6 +78,18 @@ namespace HeadGait.Cli
                 return failed == 0 ? 0 : 1;
             });
             return command;
+        }
+
+        static List<double> FrameRates(string list)
+        {
+            var rates = new List<double>();
+            foreach (var part in (list ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+            {
+                if (!double.TryParse(part, System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture, out double r) || r < 10 || r > 1000)
+                    throw new UsageException($"--pose: '{part}' is not a frame rate of 10 to 1000 Hz");
+                rates.Add(r);
+            }
+            return rates;
         }
 
         static double Units(string u)

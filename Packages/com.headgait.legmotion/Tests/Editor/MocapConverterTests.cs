@@ -74,7 +74,7 @@ ROOT Hips
         /// A CMU-named skeleton (cm, y up, facing +z) that stands for 1.5 s, steps in place for 4 s (each foot lifted 8 cm
         /// for 0.4 s, a step every 0.5 s, left first), then stands. The hips bob 2 cm at the step rate.
         /// </summary>
-        static string SteppingInPlace(out List<(double time, Foot foot)> contacts)
+        static string SteppingInPlace(out List<(double time, Foot foot)> contacts, double swayCm = 0)
         {
             contacts = new List<(double, Foot)>();
             const double frameTime = 1.0 / 120;
@@ -100,7 +100,9 @@ ROOT Hips
                 }
                 bool walking = t > walkStart && t < walkStart + steps * step;
                 double bob = walking ? 2 * Math.Cos(2 * Math.PI * (t - walkStart) / step) - 2 : 0;
-                var v = new List<double> { 0, 90 + bob, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+                // Optional sideways sway of the whole body along +x, the skeleton's left.
+                double sway = swayCm * Math.Sin(2 * Math.PI * t);
+                var v = new List<double> { sway, 90 + bob, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
                 v.AddRange(new[] { 10.0, lift(Foot.Left) - bob, 0, 0, 0, 0, 0, 0, 0 });
                 v.AddRange(new[] { -10.0, lift(Foot.Right) - bob, 0, 0, 0, 0, 0, 0, 0 });
                 for (int i = 0; i < v.Count; i++) sb.Append(i > 0 ? " " : "").Append(v[i].ToString("R", CultureInfo.InvariantCulture));
@@ -149,6 +151,55 @@ ROOT Hips
             }
             Assert.That(max - MocapConverter.Gravity, Is.EqualTo(3.16).Within(0.15));
             Assert.That(MocapConverter.Gravity - min, Is.EqualTo(3.16).Within(0.15));
+        }
+
+        [TestCase(72.0)]
+        [TestCase(90.0)]
+        [TestCase(120.0)]
+        public void PoseRecordingsReplayedThroughThePosePathGiveTheSameAccelerationAndLabels(double rate)
+        {
+            var bvh = BvhFile.Parse(SteppingInPlace(out _, swayCm: 3), "sway.bvh");
+            var clean = new MocapSettings { BiasSd = 0, NoiseSd = 0, JitterSd = 0, PositionNoiseSd = 0, RotationNoiseDegrees = 0 };
+            var accel = MocapConverter.Convert(bvh, clean);
+            var poses = MocapConverter.ConvertPose(bvh, rate, clean);
+            Assert.That(poses.Name, Is.EqualTo($"sway_{rate:0}hz"));
+            string path = Path.Combine(Path.GetTempPath(), $"headgait-pose-{Guid.NewGuid():N}.csv");
+            try
+            {
+                PoseCsv.Save(poses, path);
+                Assert.That(PoseCsv.IsPoseFile(path), Is.True);
+                var replayed = PoseCsv.ToAcceleration(path, strict: true);
+                Assert.That(replayed.SourceLag, Is.InRange(0.025, 0.05));
+                // Each replayed sample describes the motion SourceLag before its stamp: compare with the 100 Hz recording there.
+                var a = new List<double>[3];
+                var b = new List<double>[3];
+                for (int k = 0; k < 3; k++) { a[k] = new List<double>(); b[k] = new List<double>(); }
+                int labels = 0, agree = 0;
+                foreach (var r in replayed.Samples)
+                {
+                    int i = (int)Math.Round((r.Imu.Time - replayed.SourceLag) / 0.01);
+                    if (i < 0 || i >= accel.Samples.Count) continue;
+                    var q = accel.Samples[i].Imu;
+                    a[0].Add(r.Imu.X); a[1].Add(r.Imu.Y); a[2].Add(r.Imu.Z);
+                    b[0].Add(q.X); b[1].Add(q.Y); b[2].Add(q.Z);
+                    // Labels belong to the newest pose: compare at the stamp.
+                    int j = (int)Math.Round(r.Imu.Time / 0.01);
+                    if (j >= accel.Samples.Count) continue;
+                    labels++;
+                    if (accel.Samples[j].Left == r.Left && accel.Samples[j].Right == r.Right) agree++;
+                }
+                // Sideways (left, +y) and vertical acceleration follow the sway and the bob, with the same signs.
+                Assert.That(MathNet.Numerics.Statistics.Correlation.Pearson(a[1], b[1]), Is.GreaterThan(0.98), "lateral");
+                Assert.That(MathNet.Numerics.Statistics.Correlation.Pearson(a[2], b[2]), Is.GreaterThan(0.98), "vertical");
+                double forward = 0;
+                foreach (var x in a[0]) forward = Math.Max(forward, Math.Abs(x));
+                Assert.That(forward, Is.LessThan(0.1), "no forward motion in the clip");
+                Assert.That(agree, Is.GreaterThan(0.97 * labels));
+            }
+            finally
+            {
+                File.Delete(path);
+            }
         }
 
         [Test]

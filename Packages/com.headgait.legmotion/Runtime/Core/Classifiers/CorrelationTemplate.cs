@@ -285,7 +285,7 @@ namespace HeadGait
             return KeyValueText.Write(Magic, pairs);
         }
 
-        public void Save(string path) => File.WriteAllText(path, Serialize(), new UTF8Encoding(false));
+        public void Save(string path) => AtomicFile.WriteAllText(path, Serialize());
 
         public static CorrelationTemplate Load(string path) => Parse(File.ReadAllText(path, Encoding.UTF8), path);
 

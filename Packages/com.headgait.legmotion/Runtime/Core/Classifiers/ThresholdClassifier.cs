@@ -81,7 +81,7 @@ namespace HeadGait
             return sb.ToString();
         }
 
-        public void Save(string path) => File.WriteAllText(path, Serialize(), new UTF8Encoding(false));
+        public void Save(string path) => AtomicFile.WriteAllText(path, Serialize());
 
         public static ThresholdSettings Load(string path) => Parse(File.ReadAllText(path, Encoding.UTF8), path);
 

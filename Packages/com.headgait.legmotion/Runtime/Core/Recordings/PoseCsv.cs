@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.IO;
 using System.Text;
 
@@ -40,6 +41,20 @@ namespace HeadGait
     /// into tracking space); labels as in acceleration recordings. Replayed through <see cref="ToAcceleration"/>, which
     /// is what the XR pose source does live.
     /// </summary>
+    /// <summary>A head-pose recording in memory: poses with per-foot labels, and metadata written as comment lines.</summary>
+    public sealed class PoseRecording
+    {
+        public PoseRecording(string name, List<(PoseSample pose, GaitPhase left, GaitPhase right)> rows)
+        {
+            Name = name;
+            Rows = rows;
+        }
+
+        public string Name { get; }
+        public List<(PoseSample pose, GaitPhase left, GaitPhase right)> Rows { get; }
+        public Dictionary<string, string> Metadata { get; } = new Dictionary<string, string>();
+    }
+
     public static class PoseCsv
     {
         public const string Magic = "# headgait-pose v1";
@@ -73,6 +88,21 @@ namespace HeadGait
             }
             return rows;
         }
+
+        /// <summary>Writes a pose recording (whole or not at all: see <see cref="AtomicFile"/>).</summary>
+        public static void Save(PoseRecording recording, string path) => AtomicFile.WriteText(path, w =>
+        {
+            w.WriteLine(Magic);
+            foreach (var kv in recording.Metadata) w.WriteLine($"# {kv.Key}={kv.Value}");
+            w.WriteLine(string.Join(",", RequiredColumns) + ",phase_left,phase_right");
+            var ci = CultureInfo.InvariantCulture;
+            foreach (var (p, left, right) in recording.Rows)
+            {
+                w.WriteLine(string.Join(",", p.Time.ToString("F5", ci), p.Px.ToString("F5", ci), p.Py.ToString("F5", ci), p.Pz.ToString("F5", ci),
+                    p.Qx.ToString("F6", ci), p.Qy.ToString("F6", ci), p.Qz.ToString("F6", ci), p.Qw.ToString("F6", ci),
+                    GaitPhases.ShortName(left), GaitPhases.ShortName(right)));
+            }
+        });
 
         /// <summary>
         /// The acceleration recording a pose recording becomes through the XR pose path: each pose through a

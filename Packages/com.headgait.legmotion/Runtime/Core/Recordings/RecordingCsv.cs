@@ -72,12 +72,7 @@ namespace HeadGait
 
         public static void Save(Recording recording, string path)
         {
-            string dir = Path.GetDirectoryName(Path.GetFullPath(path));
-            if (!string.IsNullOrEmpty(dir)) Directory.CreateDirectory(dir);
-            using (var w = new StreamWriter(path, false, new UTF8Encoding(false)))
-            {
-                Write(recording, w);
-            }
+            AtomicFile.WriteText(path, w => Write(recording, w));
         }
 
         public static void Write(Recording recording, TextWriter w)

@@ -124,10 +124,7 @@ namespace HeadGait
         /// <summary>Writes to a temporary file beside the target, then moves it in place, so a failed write never leaves half a model.</summary>
         public void Save(string path)
         {
-            string tmp = path + ".tmp";
-            File.WriteAllBytes(tmp, ToBytes());
-            if (File.Exists(path)) File.Delete(path);
-            File.Move(tmp, path);
+            AtomicFile.WriteAllBytes(path, ToBytes());
         }
 
         public static ModelFile Load(string path)

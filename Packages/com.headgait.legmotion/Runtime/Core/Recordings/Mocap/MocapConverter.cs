@@ -35,6 +35,9 @@ namespace HeadGait.Mocap
         /// <summary>Sensor errors: constant bias (SD per axis, m/s^2), white noise (SD, m/s^2), timestamp jitter (SD, s). Zero turns them off.</summary>
         public double BiasSd = 0.03, NoiseSd = 0.03, JitterSd = 0.0005;
 
+        /// <summary>Pose recordings: tracking noise (position SD, m; rotation SD, degrees) and frame-time jitter (SD, s). Zero turns them off.</summary>
+        public double PositionNoiseSd = 0.0005, RotationNoiseDegrees = 0.05, FrameJitterSd = 0.001;
+
         /// <summary>Seed of the sensor errors; 0 derives one from the file name, so a file always converts the same way.</summary>
         public ulong Seed;
     }
@@ -64,76 +67,176 @@ namespace HeadGait.Mocap
             ["right-hip"] = new[] { "UpperLeg_R", "RightUpLeg", "RightHip", "RightUpperLeg", "rThigh", "R_Hip" },
         };
 
-        public static Recording Convert(BvhFile bvh, MocapSettings settings = null)
+        /// <summary>What both conversions share: the skeleton's joints, units and up axis, the calibrated head frame, the
+        /// sensor point's offset and each foot's labels at the output rate.</summary>
+        sealed class Capture
         {
-            var s = settings ?? new MocapSettings();
-            int head = Joint(bvh, s.Head, "head");
+            public BvhPose Pose;
+            public int Head, Up;
+            public double Scale, Dt, FrameTime;
+            public int N;
+            public Vec3 UpVec, Forward, Left, SensorInHead;
+            public Rotation3 HeadToFrame;
+            public double[] FrameTimes;
+            public ButterworthLowPass Filter;
+            public GaitPhase[] LabelsLeft, LabelsRight;
+            public bool[] Walking;
+            public string Joints;
+
+            /// <summary>Position of the sensor point (m, world axes) at every output sample, low-passed like the acceleration.</summary>
+            public double[][] SensorPositions()
+            {
+                var sensor = new double[3][];
+                for (int k = 0; k < 3; k++)
+                {
+                    var v = new double[FrameTimes.Length];
+                    for (int f = 0; f < v.Length; f++) v[f] = Scale * (Pose.Positions[f][Head] + Pose.Rotations[f][Head] * SensorInHead)[k];
+                    sensor[k] = Filter.FilterForwardBackward(Resample(FrameTimes, v, N, Dt));
+                }
+                return sensor;
+            }
+
+            /// <summary>The head frame (columns forward, left, up in world axes) at time t.</summary>
+            public Rotation3 HeadFrameAt(double t) => HeadRotationAt(Pose, Head, t / FrameTime) * HeadToFrame;
+
+            public GaitPhase LeftAt(int i) => Walking[i] ? LabelsLeft[i] : GaitPhase.Standing;
+            public GaitPhase RightAt(int i) => Walking[i] ? LabelsRight[i] : GaitPhase.Standing;
+        }
+
+        static Capture Prepare(BvhFile bvh, MocapSettings s)
+        {
+            var c = new Capture();
+            c.Head = Joint(bvh, s.Head, "head");
             int leftFoot = Joint(bvh, s.LeftFoot, "left-foot"), leftToe = Joint(bvh, s.LeftToe, "left-toe");
             int rightFoot = Joint(bvh, s.RightFoot, "right-foot"), rightToe = Joint(bvh, s.RightToe, "right-toe");
             int leftHip = Joint(bvh, s.LeftHip, "left-hip"), rightHip = Joint(bvh, s.RightHip, "right-hip");
-            var pose = new BvhPose(bvh);
-            int up = s.UpAxis >= 0 ? s.UpAxis : GuessUpAxis(pose, head, leftFoot, rightFoot);
+            var pose = c.Pose = new BvhPose(bvh);
+            int up = c.Up = s.UpAxis >= 0 ? s.UpAxis : GuessUpAxis(pose, c.Head, leftFoot, rightFoot);
             if (up > 2) throw new ArgumentException("UpAxis must be 0 (x), 1 (y) or 2 (z).");
-            double scale = s.MetresPerUnit > 0 ? s.MetresPerUnit : GuessMetresPerUnit(bvh, pose, leftHip, leftFoot, up);
-            var upVec = Vec3.Axis(up);
+            double scale = c.Scale = s.MetresPerUnit > 0 ? s.MetresPerUnit : GuessMetresPerUnit(bvh, pose, leftHip, leftFoot, up);
+            var upVec = c.UpVec = Vec3.Axis(up);
 
             // Head frame at the first frame: level, facing away from the line through the hips.
             var p0 = pose.Positions[0];
             var across = p0[leftHip] - p0[rightHip];
             var left = across - Vec3.Dot(across, upVec) * upVec;
             if (left.Length < 1e-9) throw new BvhFormatException(bvh.Name, 0, "the hips are level with each other vertically: cannot tell which way the body faces");
-            left = left.Normalized;
-            var forward = Vec3.Cross(left, upVec);
+            left = c.Left = left.Normalized;
+            var forward = c.Forward = Vec3.Cross(left, upVec);
             var calibrated = Rotation3.FromColumns(forward, left, upVec);
-            var headToFrame = pose.Rotations[0][head].Transposed * calibrated; // head frame axes in the head joint's own axes
-            var sensorInHead = pose.Rotations[0][head].Transposed * ((s.SensorForward / scale) * forward + (s.SensorUp / scale) * upVec);
+            c.HeadToFrame = pose.Rotations[0][c.Head].Transposed * calibrated; // head frame axes in the head joint's own axes
+            c.SensorInHead = pose.Rotations[0][c.Head].Transposed * ((s.SensorForward / scale) * forward + (s.SensorUp / scale) * upVec);
 
             int frames = bvh.FrameCount;
-            var frameTimes = new double[frames];
-            for (int f = 0; f < frames; f++) frameTimes[f] = f * bvh.FrameTime;
-            double dt = 1.0 / s.SampleRate;
-            int n = (int)Math.Floor(frameTimes[frames - 1] * s.SampleRate + 1e-9) + 1;
-            if (n < 8) throw new BvhFormatException(bvh.Name, 0, $"the motion lasts {frameTimes[frames - 1]:F3} s: too short to convert");
-            var filter = new ButterworthLowPass(s.LowPassOrder, s.LowPassHz, s.SampleRate);
+            c.FrameTime = bvh.FrameTime;
+            c.FrameTimes = new double[frames];
+            for (int f = 0; f < frames; f++) c.FrameTimes[f] = f * bvh.FrameTime;
+            c.Dt = 1.0 / s.SampleRate;
+            c.N = (int)Math.Floor(c.FrameTimes[frames - 1] * s.SampleRate + 1e-9) + 1;
+            if (c.N < 8) throw new BvhFormatException(bvh.Name, 0, $"the motion lasts {c.FrameTimes[frames - 1]:F3} s: too short to convert");
+            c.Filter = new ButterworthLowPass(s.LowPassOrder, s.LowPassHz, s.SampleRate);
+            c.LabelsLeft = FootLabels(pose, c.FrameTimes, leftFoot, leftToe, up, scale, c.Filter, c.N, c.Dt, s, out var contactLeft);
+            c.LabelsRight = FootLabels(pose, c.FrameTimes, rightFoot, rightToe, up, scale, c.Filter, c.N, c.Dt, s, out var contactRight);
+            c.Walking = WalkingBouts(contactLeft, contactRight, c.Dt, s.StandingSeconds);
+            c.Joints = string.Join(",", bvh.Joints[c.Head].Name, bvh.Joints[leftFoot].Name, bvh.Joints[leftToe].Name,
+                bvh.Joints[rightFoot].Name, bvh.Joints[rightToe].Name, bvh.Joints[leftHip].Name, bvh.Joints[rightHip].Name);
+            return c;
+        }
 
+        public static Recording Convert(BvhFile bvh, MocapSettings settings = null)
+        {
+            var s = settings ?? new MocapSettings();
+            var c = Prepare(bvh, s);
+            int n = c.N;
+            double dt = c.Dt;
             // Sensor position at 100 Hz, filtered, differentiated twice; plus g on up.
-            var sensor = new double[3][];
-            for (int k = 0; k < 3; k++)
-            {
-                var v = new double[frames];
-                for (int f = 0; f < frames; f++) v[f] = scale * (pose.Positions[f][head] + pose.Rotations[f][head] * sensorInHead)[k];
-                sensor[k] = SecondDerivative(filter.FilterForwardBackward(Resample(frameTimes, v, n, dt)), dt);
-            }
+            var sensor = c.SensorPositions();
+            for (int k = 0; k < 3; k++) sensor[k] = SecondDerivative(sensor[k], dt);
 
             var random = new DeterministicRandom(s.Seed != 0 ? s.Seed : DeterministicRandom.SeedFrom(bvh.Name));
             var bias = new Vec3(random.NextGaussian() * s.BiasSd, random.NextGaussian() * s.BiasSd, random.NextGaussian() * s.BiasSd);
-            var labelsLeft = FootLabels(pose, frameTimes, leftFoot, leftToe, up, scale, filter, n, dt, s, out var contactLeft);
-            var labelsRight = FootLabels(pose, frameTimes, rightFoot, rightToe, up, scale, filter, n, dt, s, out var contactRight);
-            var walking = WalkingBouts(contactLeft, contactRight, dt, s.StandingSeconds);
-
             var samples = new List<RecordedSample>(n);
             int trim = (int)Math.Round(s.TrimSeconds * s.SampleRate);
             for (int i = trim; i < n - trim; i++)
             {
                 double t = i * dt;
-                var world = new Vec3(sensor[0][i], sensor[1][i], sensor[2][i]) + Gravity * upVec;
-                var frame = HeadRotationAt(pose, head, t / bvh.FrameTime) * headToFrame;
-                var a = frame.Transposed * world + bias;
+                var world = new Vec3(sensor[0][i], sensor[1][i], sensor[2][i]) + Gravity * c.UpVec;
+                var a = c.HeadFrameAt(t).Transposed * world + bias;
                 var imu = new ImuSample(t - trim * dt + random.NextGaussian() * s.JitterSd,
                     a.X + random.NextGaussian() * s.NoiseSd, a.Y + random.NextGaussian() * s.NoiseSd, a.Z + random.NextGaussian() * s.NoiseSd);
-                bool walk = walking[i];
-                samples.Add(new RecordedSample(imu, walk ? labelsLeft[i] : GaitPhase.Standing, walk ? labelsRight[i] : GaitPhase.Standing));
+                samples.Add(new RecordedSample(imu, c.LeftAt(i), c.RightAt(i)));
             }
             var rec = new Recording(System.IO.Path.GetFileNameWithoutExtension(bvh.Name), samples);
             var ci = CultureInfo.InvariantCulture;
             rec.Metadata["source"] = bvh.Name;
             rec.Metadata["generator"] = "headgait from-bvh (mocap-derived head acceleration; labels from foot kinematics)";
-            rec.Metadata["joints"] = string.Join(",", bvh.Joints[head].Name, bvh.Joints[leftFoot].Name, bvh.Joints[leftToe].Name,
-                bvh.Joints[rightFoot].Name, bvh.Joints[rightToe].Name, bvh.Joints[leftHip].Name, bvh.Joints[rightHip].Name);
-            rec.Metadata["metres_per_unit"] = scale.ToString("R", ci);
-            rec.Metadata["up_axis"] = "xyz"[up].ToString();
+            rec.Metadata["joints"] = c.Joints;
+            rec.Metadata["metres_per_unit"] = c.Scale.ToString("R", ci);
+            rec.Metadata["up_axis"] = "xyz"[c.Up].ToString();
             rec.Metadata["sample_rate_hz"] = s.SampleRate.ToString("R", ci);
             return rec;
+        }
+
+        /// <summary>
+        /// The head pose an XR runtime would report for the same sensor point, at <paramref name="frameRate"/> frames per
+        /// second with frame-time jitter: position (m) and rotation in Unity's tracking space (left-handed, x right, y up,
+        /// z forward; origin below the start, z along the calibrated forward) plus tracking noise, labels from the feet.
+        /// </summary>
+        public static PoseRecording ConvertPose(BvhFile bvh, double frameRate, MocapSettings settings = null)
+        {
+            if (!(frameRate >= 10 && frameRate <= 1000)) throw new ArgumentException("The frame rate must be 10 to 1000 Hz.", nameof(frameRate));
+            var s = settings ?? new MocapSettings();
+            var c = Prepare(bvh, s);
+            var sensor = c.SensorPositions();
+            var grid = new double[c.N];
+            for (int i = 0; i < c.N; i++) grid[i] = i * c.Dt;
+            var track = new NaturalCubicSpline[3];
+            for (int k = 0; k < 3; k++) track[k] = new NaturalCubicSpline(grid, sensor[k]);
+            var origin = new Vec3(sensor[0][0], sensor[1][0], sensor[2][0]);
+            origin = origin - Vec3.Dot(origin, c.UpVec) * c.UpVec;
+            // World (right-handed) to tracking space (left-handed): x = right = -left, y = up, z = forward.
+            Vec3 Tracking(Vec3 v) => new Vec3(-Vec3.Dot(v, c.Left), Vec3.Dot(v, c.UpVec), Vec3.Dot(v, c.Forward));
+
+            var random = new DeterministicRandom((s.Seed != 0 ? s.Seed : DeterministicRandom.SeedFrom(bvh.Name)) ^ (ulong)(frameRate * 1000));
+            var rows = new List<(PoseSample, GaitPhase, GaitPhase)>();
+            double start = s.TrimSeconds, end = (c.N - 1) * c.Dt - s.TrimSeconds, last = double.NegativeInfinity;
+            for (int k = 0; ; k++)
+            {
+                double t = start + k / frameRate + random.NextGaussian() * s.FrameJitterSd;
+                if (t > end) break;
+                if (t < start || t <= last + 1e-4) continue;
+                last = t;
+                var p = new Vec3(track[0].Value(t), track[1].Value(t), track[2].Value(t)) - origin;
+                var pos = Tracking(p) + new Vec3(random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd);
+                var h = c.HeadFrameAt(t);
+                var forward = new Vec3(h.M00, h.M10, h.M20);
+                var left = new Vec3(h.M01, h.M11, h.M21);
+                var up = new Vec3(h.M02, h.M12, h.M22);
+                // Columns: the camera's right, up and forward axes in tracking space.
+                var rotation = Rotation3.FromColumns(Tracking(-1 * left), Tracking(up), Tracking(forward)) * SmallRotation(random, s.RotationNoiseDegrees);
+                rotation.ToQuaternion(out double qx, out double qy, out double qz, out double qw);
+                int i = Math.Min(c.N - 1, (int)Math.Round(t / c.Dt));
+                rows.Add((new PoseSample(t - start, pos.X, pos.Y, pos.Z, qx, qy, qz, qw), c.LeftAt(i), c.RightAt(i)));
+            }
+            var rec = new PoseRecording(System.IO.Path.GetFileNameWithoutExtension(bvh.Name) + $"_{frameRate:0}hz", rows);
+            var ci = CultureInfo.InvariantCulture;
+            rec.Metadata["source"] = bvh.Name;
+            rec.Metadata["generator"] = "headgait from-bvh --pose (mocap head pose as an XR runtime reports it; labels from foot kinematics)";
+            rec.Metadata["joints"] = c.Joints;
+            rec.Metadata["frame_rate_hz"] = frameRate.ToString("R", ci);
+            rec.Metadata["tracking_noise"] = $"position {s.PositionNoiseSd.ToString("R", ci)} m, rotation {s.RotationNoiseDegrees.ToString("R", ci)} deg, frame jitter {s.FrameJitterSd.ToString("R", ci)} s";
+            return rec;
+        }
+
+        /// <summary>A rotation about a random axis by a normally distributed angle (degrees SD).</summary>
+        static Rotation3 SmallRotation(DeterministicRandom random, double sdDegrees)
+        {
+            if (sdDegrees <= 0) return Rotation3.Identity;
+            var axis = new Vec3(random.NextGaussian(), random.NextGaussian(), random.NextGaussian());
+            if (axis.Length < 1e-12) return Rotation3.Identity;
+            axis = axis.Normalized;
+            double half = 0.5 * random.NextGaussian() * sdDegrees * Math.PI / 180, sin = Math.Sin(half);
+            return Rotation3.FromQuaternion(axis.X * sin, axis.Y * sin, axis.Z * sin, Math.Cos(half));
         }
 
         static int Joint(BvhFile bvh, string name, string role)
