@@ -90,6 +90,9 @@ namespace HeadGait.Unity
             lastState = LocomotionState.Standing;
         }
 
+        /// <summary>Seconds the pushed samples lag the motion (the pose estimator's lag on the pose path, else 0).</summary>
+        public double SourceLag { get; set; }
+
         /// <summary>Feeds one accelerometer sample: specific force in the head frame (x forward, y left, z up), m/s^2.</summary>
         public SampleOutcome Push(double time, Vector3 headFrameSpecificForce)
         {

@@ -3,8 +3,22 @@ using UnityEngine;
 namespace HeadGait.Unity
 {
     /// <summary>
-    /// Conversions between Unity's left-handed axes (x right, y up, z forward) and the package's head frame
-    /// (x forward, y left, z up), in which recordings, templates and the lateral channel are defined.
+    /// How a phone sits in a headset, as Unity names screen orientations; the value is the phone's counter-clockwise
+    /// turn from portrait in degrees, seen from the user (screen towards the eyes). Cardboard-style viewers hold the
+    /// phone in <see cref="LandscapeLeft"/>: top of the phone to the user's left.
+    /// </summary>
+    public enum PhoneMounting
+    {
+        Portrait = 0,
+        LandscapeLeft = 90,
+        PortraitUpsideDown = 180,
+        LandscapeRight = 270,
+    }
+
+    /// <summary>
+    /// Conversions into the package's head frame (x forward, y left, z up; specific force in m/s^2), in which recordings,
+    /// templates and the lateral channel are defined, from Unity's left-handed tracking axes (x right, y up, z forward) and
+    /// from a phone's right-handed sensor axes (portrait: x right, y up, z out of the screen).
     /// </summary>
     public static class HeadAxes
     {
@@ -24,13 +38,28 @@ namespace HeadGait.Unity
         }
 
         /// <summary>
-        /// Specific force in the head frame from Input.acceleration (units of g, device axes, reads the gravity
-        /// direction, e.g. (0,0,-1) lying face up) of a phone in a headset, given the phone's orientation in the head.
+        /// Specific force in the head frame from a phone accelerometer reading as Unity reports it: in g, pointing along
+        /// gravity (a phone lying face up reads (0, 0, -1); Android's m/s^2 are divided by -g by the Input System, iOS
+        /// reports so natively), in the phone's right-handed axes turned <paramref name="rotationDegrees"/> counter-clockwise
+        /// from portrait as the user sees the screen (a multiple of 90). The screen faces the user, so the phone's z is
+        /// the head's backward.
         /// </summary>
-        public static Vector3 SpecificForceFromMobile(Vector3 inputAcceleration, Quaternion deviceToHeadUnity)
+        public static Vector3 SpecificForceFromPhone(Vector3 readingInG, int rotationDegrees)
         {
-            Vector3 specificDevice = -inputAcceleration * StandardGravity;
-            return FromUnityLocal(deviceToHeadUnity * specificDevice);
+            // Specific force is minus the gravity-direction reading.
+            float fx = -readingInG.x * StandardGravity, fy = -readingInG.y * StandardGravity, fz = -readingInG.z * StandardGravity;
+            // The phone's x and y on the user's right and up: portrait x = right, y = up; each quarter turn
+            // counter-clockwise takes x to up and y to left.
+            float right, up;
+            switch (((rotationDegrees % 360) + 360) % 360)
+            {
+                case 0: right = fx; up = fy; break;
+                case 90: right = -fy; up = fx; break;
+                case 180: right = -fx; up = -fy; break;
+                case 270: right = fy; up = -fx; break;
+                default: throw new System.ArgumentException($"The phone's rotation must be a multiple of 90 degrees, not {rotationDegrees}.", nameof(rotationDegrees));
+            }
+            return new Vector3(-fz, -right, up);
         }
     }
 }

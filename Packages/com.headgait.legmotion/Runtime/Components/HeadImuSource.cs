@@ -1,5 +1,4 @@
 using UnityEngine;
-using UnityEngine.XR;
 
 namespace HeadGait.Unity
 {
@@ -7,21 +6,22 @@ namespace HeadGait.Unity
     public enum HeadImuMode
     {
         /// <summary>
-        /// XR head device: CommonUsages.deviceAcceleration (gravity removed) and deviceRotation; where the runtime
-        /// reports no acceleration (common with OpenXR), falls back to differentiating devicePosition.
+        /// The headset: its reported acceleration while it is real (the device has the control, its tracking state
+        /// flags it, and it is not all zeros), otherwise acceleration derived from the tracked head pose (OpenXR, Quest).
         /// </summary>
         XRDevice = 0,
-        /// <summary>XR head device, acceleration always derived from the tracked pose (devicePosition, deviceRotation).</summary>
+        /// <summary>The headset, acceleration always derived from the tracked head pose.</summary>
         XRDevicePose = 3,
-        /// <summary>A phone in a headset: Input.acceleration, rotated by the phone's mounting orientation.</summary>
+        /// <summary>A phone in a headset: its accelerometer (or linear acceleration plus gravity), with the phone's mounting.</summary>
         MobileInput = 1,
         /// <summary>Nothing is read; samples are pushed by script (GaitLegAnimator.Push) or a RecordingPlayer.</summary>
         External = 2,
     }
 
     /// <summary>
-    /// Reads the headset's accelerometer once per frame and hands it to a <see cref="GaitLegAnimator"/>.
-    /// Frame-rate sampling (72-120 Hz, irregular) is fine: the core resamples to 100 Hz.
+    /// Hands every head sample, with its own timestamp, to a <see cref="GaitLegAnimator"/>. Reads through the Input System
+    /// (each sensor event, not once per frame); in projects without it, polls the legacy Input Manager once per frame.
+    /// The decisions (which path, units, axes, timestamps) live in <see cref="HeadSampleRouter"/>; this is the adapter.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("HeadGait/Head IMU Source")]
@@ -30,75 +30,73 @@ namespace HeadGait.Unity
         [SerializeField] GaitLegAnimator target;
         [SerializeField] HeadImuMode mode = HeadImuMode.XRDevice;
 
-        [Tooltip("MobileInput only: rotation from the phone's axes to the head's (Unity axes). Landscape-left phone behind the lenses: (0, 0, -90).")]
-        [SerializeField] Vector3 deviceToHeadEuler = new Vector3(0f, 0f, -90f);
+        [Tooltip("MobileInput only: how the phone sits in the headset, screen towards the eyes. Cardboard-style viewers: LandscapeLeft (top of the phone to the left).")]
+        [SerializeField] PhoneMounting phoneMounting = PhoneMounting.LandscapeLeft;
 
-        InputDevice head;
-        readonly PoseAccelerationEstimator fromPose = new PoseAccelerationEstimator();
+        HeadSampleRouter router;
+#if ENABLE_INPUT_SYSTEM
+        InputSystemHeadReader reader;
+#elif ENABLE_LEGACY_INPUT_MANAGER
+        LegacyHeadReader legacy;
+#endif
 
+        /// <summary>Takes effect on the next enable.</summary>
         public HeadImuMode Mode
         {
             get => mode;
             set => mode = value;
         }
 
-        /// <summary>The last specific force read, head frame (x forward, y left, z up), m/s^2.</summary>
+        /// <summary>Takes effect on the next enable.</summary>
+        public PhoneMounting PhoneMounting
+        {
+            get => phoneMounting;
+            set => phoneMounting = value;
+        }
+
+        /// <summary>The last specific force handed on, head frame (x forward, y left, z up), m/s^2.</summary>
         public Vector3 LastSample { get; private set; }
 
-        /// <summary>Frames in which no acceleration could be read.</summary>
-        public int MissedFrames { get; private set; }
+        /// <summary>The decoded-event path, for diagnostics (samples delivered, duplicates refused, path switches).</summary>
+        public HeadSampleRouter Router => router;
 
-        /// <summary>True once the XR device gave no acceleration and the tracked pose is being differentiated instead.</summary>
-        public bool UsingPoseFallback { get; private set; }
+        /// <summary>True while the headset's acceleration is derived from its tracked pose.</summary>
+        public bool UsingPoseFallback => router != null && router.WantsHead && router.Head.UsingPose;
 
         void OnEnable()
         {
             if (target == null) target = GetComponent<GaitLegAnimator>();
-            if (mode == HeadImuMode.MobileInput) Input.gyro.enabled = true;
+            if (mode == HeadImuMode.External) return;
+            router = new HeadSampleRouter(mode, phoneMounting, Deliver);
+#if ENABLE_INPUT_SYSTEM
+            reader = new InputSystemHeadReader(router);
+#elif ENABLE_LEGACY_INPUT_MANAGER
+            legacy = new LegacyHeadReader(router);
+#else
+            Debug.LogWarning("HeadGait: neither the Input System nor the legacy Input Manager is active; no head samples are read.", this);
+#endif
         }
 
-        void Update()
+        void OnDisable()
         {
-            if (target == null || mode == HeadImuMode.External) return;
-            double now = Time.realtimeSinceStartupAsDouble;
-            if (TryRead(now, out double time, out Vector3 f))
-            {
-                LastSample = f;
-                target.Push(time, f);
-            }
-            else
-            {
-                MissedFrames++;
-            }
+#if ENABLE_INPUT_SYSTEM
+            reader?.Dispose();
+            reader = null;
+#elif ENABLE_LEGACY_INPUT_MANAGER
+            legacy = null;
+#endif
         }
 
-        bool TryRead(double now, out double time, out Vector3 specificForce)
+#if !ENABLE_INPUT_SYSTEM && ENABLE_LEGACY_INPUT_MANAGER
+        void Update() => legacy?.Poll(Time.unscaledTimeAsDouble);
+#endif
+
+        void Deliver(HeadSample sample)
         {
-            time = now;
-            specificForce = default;
-            if (mode == HeadImuMode.MobileInput)
-            {
-                specificForce = HeadAxes.SpecificForceFromMobile(Input.acceleration, Quaternion.Euler(deviceToHeadEuler));
-                return true;
-            }
-            if (!head.isValid) head = InputDevices.GetDeviceAtXRNode(XRNode.Head);
-            if (!head.isValid) return false;
-            if (!head.TryGetFeatureValue(CommonUsages.deviceRotation, out Quaternion rotation)) return false;
-            if (mode == HeadImuMode.XRDevice && !UsingPoseFallback)
-            {
-                if (head.TryGetFeatureValue(CommonUsages.deviceAcceleration, out Vector3 linear))
-                {
-                    specificForce = HeadAxes.SpecificForceFromLinear(linear, rotation);
-                    return true;
-                }
-                UsingPoseFallback = true;
-                Debug.LogWarning("HeadGait: the XR head device reports no acceleration; differentiating its tracked position instead.", this);
-            }
-            if (!head.TryGetFeatureValue(CommonUsages.devicePosition, out Vector3 position)) return false;
-            if (!fromPose.Push(now, position.x, position.y, position.z, rotation.x, rotation.y, rotation.z, rotation.w, out ImuSample sample)) return false;
-            time = sample.Time;
-            specificForce = new Vector3((float)sample.X, (float)sample.Y, (float)sample.Z);
-            return true;
+            LastSample = sample.SpecificForce;
+            if (target == null) return;
+            target.SourceLag = sample.Lag;
+            target.Push(sample.Time, sample.SpecificForce);
         }
     }
 }

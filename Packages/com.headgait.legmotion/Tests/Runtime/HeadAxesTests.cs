@@ -54,14 +54,6 @@ namespace HeadGait.Tests
             Assert.That(Magnitude(f), Is.EqualTo(expected).Within(1e-3f));
         }
 
-        [Test]
-        public void PhoneUprightInHeadsetReadsGravityUp()
-        {
-            // Input.acceleration reads the gravity direction in g: a phone standing upright in portrait reads (0,-1,0).
-            var f = HeadAxes.SpecificForceFromMobile(new Vector3(0, -1, 0), Quaternion.identity);
-            Assert.That(f.z, Is.EqualTo(G).Within(1e-4f));
-        }
-
         static float Magnitude(Vector3 v) => (float)System.Math.Sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
     }
 }
