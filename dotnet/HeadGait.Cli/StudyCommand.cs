@@ -39,7 +39,21 @@ namespace HeadGait.Cli
                 target, participants, seed,
             };
             generate.SetAction(p => Generate(p.GetValue(target), p.GetValue(participants), p.GetValue(seed)));
-            return new Command("study", "The simulator-sickness study: summarise its data, or generate a made-up one.") { summarize, generate };
+            var package = new Argument<string>("package") { Description = "the package folder (Packages/com.headgait.legmotion)" };
+            var scene = new Command("scene", "Rewrites the study sample's scene, Samples~/Study/Study.unity, from the generator (after changing it or the scripts' GUIDs).")
+            {
+                package,
+            };
+            scene.SetAction(p => WriteScene(p.GetValue(package)));
+            return new Command("study", "The simulator-sickness study: summarise its data, generate a made-up one, or rewrite its scene.") { summarize, generate, scene };
+        }
+
+        static int WriteScene(string package)
+        {
+            string path = StudyScene.PathIn(package);
+            File.WriteAllText(path, StudyScene.Yaml(StudyScene.ScriptsIn(package)));
+            Console.WriteLine($"wrote {path}");
+            return 0;
         }
 
         static int Generate(string folder, int count, ulong seed)
