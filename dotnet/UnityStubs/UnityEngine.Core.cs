@@ -81,6 +81,8 @@ namespace UnityEngine
     public sealed class Screen
     {
         public static ScreenOrientation orientation { get; set; } = ScreenOrientation.LandscapeLeft;
+        public static int width => 1280;
+        public static int height => 720;
     }
 
     // Modules/InputLegacy/Input.bindings.cs (legacy Input Manager; throws in Input-System-only projects)

@@ -63,10 +63,4 @@ namespace UnityEngine
         public float width { get; set; }
         public float height { get; set; }
     }
-
-    public sealed class Screen
-    {
-        public static int width => 1280;
-        public static int height => 720;
-    }
 }
