@@ -24,17 +24,12 @@ namespace UnityEngine
 
     public class MonoBehaviour : Behaviour { }
 
-    public class Animator : Behaviour
-    {
-        public void SetInteger(string name, int value) { }
-        public void SetFloat(string name, float value) { }
-        public void SetBool(string name, bool value) { }
-    }
-
     public class TextAsset : Object
     {
         public TextAsset(string text) { this.text = text; }
         public string text { get; }
+        // UnityCsReference Runtime/Export/Scripting/TextAsset.bindings.cs: public extern byte[] bytes { get; }
+        public byte[] bytes => System.Text.Encoding.UTF8.GetBytes(text);
     }
 
     public static class Debug
