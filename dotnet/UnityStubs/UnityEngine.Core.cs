@@ -37,6 +37,8 @@ namespace UnityEngine
     {
         public TextAsset(string text) { this.text = text; }
         public string text { get; }
+        // Runtime/Export/Scripting/TextAsset.bindings.cs: public extern byte[] bytes { get; }
+        public byte[] bytes => System.Text.Encoding.UTF8.GetBytes(text);
     }
 
     // Runtime/Export/Debug/Debug.bindings.cs

@@ -3,30 +3,40 @@ using UnityEngine;
 
 namespace HeadGait.Unity
 {
-    public enum GaitClassifierKind
-    {
-        /// <summary>Template correlation (needs a COR template TextAsset; falls back to THR without one).</summary>
-        Correlation = 0,
-        /// <summary>Threshold on SMV; no training data needed, much less accurate.</summary>
-        Threshold = 1,
-    }
-
     /// <summary>
     /// Runs the gait pipeline on the head accelerometer and drives an Animator:
     /// int <c>GaitState</c> (LocomotionState: 0 Standing, 1 StartWalkLeft, 2 StartWalkRight, 3 Walking,
     /// 4 FinishWalkLeft, 5 FinishWalkRight), float <c>StridePhase</c> (0..1, 0 = left initial contact; use it as
-    /// the walking clip's normalized time), float <c>WalkWeight</c> (0..1) and float <c>StepPeriod</c> (s).
-    /// Parameter names can be changed; an empty name is not written.
+    /// the walking clip's normalized time), float <c>WalkWeight</c> (0..1) and float <c>StepPeriod</c> (s); names in
+    /// <see cref="AnimatorParameters"/>, overridable here. Parameters the controller lacks are reported once and skipped.
+    /// <para>
+    /// Samples pushed by the sensor source are classified at 100 Hz of sensor time on a Unity job
+    /// (<see cref="GaitBatchRunner"/>, <see cref="GaitJobScheduler"/>). Each Update completes last frame's job, writes its
+    /// latest frame to the Animator and schedules the samples that arrived since. Update (not LateUpdate) because the
+    /// Animator evaluates between Update and LateUpdate; the execution order puts this after sources that push in their
+    /// own Update.
+    /// </para>
     /// </summary>
     [DisallowMultipleComponent]
+    [DefaultExecutionOrder(ExecutionOrder)]
     [AddComponentMenu("HeadGait/Gait Leg Animator")]
     public sealed class GaitLegAnimator : MonoBehaviour
     {
+        /// <summary>After default-order scripts (sensor sources, players), still before the Animator evaluates.</summary>
+        public const int ExecutionOrder = 100;
+
         [SerializeField] Animator animator;
         [SerializeField] GaitClassifierKind classifier = GaitClassifierKind.Correlation;
 
-        [Tooltip("COR template written by 'headgait train' or Tools > HeadGait > Train COR Template (cor_template.txt).")]
+        [Header("Models (Models/ folder of the package)")]
+        [Tooltip("COR template (cor_template.txt); also the fallback of SVM and BLSTM.")]
         [SerializeField] TextAsset corTemplate;
+        [Tooltip("THR settings (thr.txt); THR runs on its defaults without it.")]
+        [SerializeField] TextAsset thrSettings;
+        [Tooltip("SVM model (svm.bytes).")]
+        [SerializeField] TextAsset svmModel;
+        [Tooltip("BLSTM model (blstm.bytes).")]
+        [SerializeField] TextAsset blstmModel;
 
         [Header("Animator parameters")]
         [SerializeField] string stateParameter = AnimatorParameters.State;
@@ -40,70 +50,88 @@ namespace HeadGait.Unity
         [Tooltip("Consecutive disagreeing predictions before the avatar changes course (paper: 3).")]
         [SerializeField] int consecutiveErrorsToSwitch = 3;
 
-        GaitPipeline pipeline;
+        GaitBatchRunner runner;
+        GaitJobScheduler scheduler;
+        AnimatorParameterWriter writer;
+        AnimatorSink sink;
         LocomotionState lastState;
+        double sourceLag;
 
         /// <summary>Raised on the frame the locomotion state changes (old, new).</summary>
         public event Action<LocomotionState, LocomotionState> StateChanged;
 
-        public GaitPipeline Pipeline => pipeline;
-        public AnimatorFrame Current => pipeline != null ? pipeline.Latest : default;
+        /// <summary>The runner that owns the pipeline (samples in, frames out); created on first use.</summary>
+        public GaitBatchRunner Runner
+        {
+            get
+            {
+                if (runner == null) Build();
+                return runner;
+            }
+        }
+
+        /// <summary>The pipeline; inspect it only outside a running batch (e.g. in LateUpdate it may be running).</summary>
+        public GaitPipeline Pipeline => Runner.Pipeline;
+
+        public AnimatorFrame Current => runner != null ? runner.Latest : default;
         public GaitPhase LeftPhase => Current.Left;
         public GaitPhase RightPhase => Current.Right;
+
+        /// <summary>How late the pushed samples describe the motion (s); the pose path sets it (<see cref="GaitPipeline.SourceLag"/>).</summary>
+        public double SourceLag
+        {
+            get => sourceLag;
+            set
+            {
+                sourceLag = value;
+                if (runner != null) runner.SourceLag = value;
+            }
+        }
 
         void Awake()
         {
             if (animator == null) animator = GetComponentInChildren<Animator>();
-            Build();
+            if (runner == null) Build();
         }
 
-        /// <summary>(Re)creates the pipeline from the inspector settings.</summary>
+        /// <summary>(Re)creates the classifier and pipeline from the inspector settings; waits for a batch in flight first.</summary>
         public void Build()
         {
-            IGaitClassifier c;
-            if (classifier == GaitClassifierKind.Correlation && corTemplate != null)
-            {
-                CorrelationTemplate template;
-                try
-                {
-                    template = CorrelationTemplate.Parse(corTemplate.text);
-                }
-                catch (FormatException e)
-                {
-                    Debug.LogError($"HeadGait: COR template '{corTemplate.name}' is unreadable ({e.Message}); using THR.", this);
-                    template = null;
-                }
-                c = template != null ? new CorrelationClassifier(template) : (IGaitClassifier)new ThresholdClassifier();
-            }
-            else
-            {
-                if (classifier == GaitClassifierKind.Correlation)
-                    Debug.LogWarning("HeadGait: no COR template assigned; using THR.", this);
-                c = new ThresholdClassifier();
-            }
+            ReleaseRunner();
+            // Only the chosen model is read (the SVM's file is megabytes); COR and THR are the fallbacks.
+            var c = GaitClassifierBuilder.Build(classifier, Text(thrSettings), Text(corTemplate),
+                classifier == GaitClassifierKind.Svm ? Binary(svmModel) : null,
+                classifier == GaitClassifierKind.Blstm ? Binary(blstmModel) : null,
+                out string error, out string warning);
+            if (error != null) Debug.LogError($"HeadGait: {error}", this);
+            if (warning != null) Debug.LogWarning($"HeadGait: {warning}.", this);
             var settings = new AnimatorSettings
             {
                 HistoryLength = Mathf.Max(1, historyLength),
                 ConsecutiveErrorsToSwitch = Mathf.Max(1, consecutiveErrorsToSwitch),
             };
-            pipeline = new GaitPipeline(c, null, settings);
+            runner = new GaitBatchRunner(new GaitPipeline(c, null, settings)) { SourceLag = sourceLag };
+            scheduler = new GaitJobScheduler(runner);
             lastState = LocomotionState.Standing;
         }
 
-        /// <summary>Seconds the pushed samples lag the motion (the pose estimator's lag on the pose path, else 0).</summary>
-        public double SourceLag { get; set; }
+        /// <summary>Reads the controller's parameters again (after swapping the Animator Controller at run time).</summary>
+        public void RefreshAnimatorParameters() => writer = null;
+
+        /// <summary>Starts the stream over: drops pending samples and shows the standing pose (a recording restarted, the source changed).</summary>
+        public void ResetGait() => Runner.Reset();
 
         /// <summary>Feeds one accelerometer sample: specific force in the head frame (x forward, y left, z up), m/s^2.</summary>
+        /// <returns>Accepted when handed over to the next batch (the pipeline's own verdict is counted in
+        /// <c>Pipeline.Preprocessor</c>); SkippedNotFinite for NaN or infinite values.</returns>
         public SampleOutcome Push(double time, Vector3 headFrameSpecificForce)
-        {
-            if (pipeline == null) Build();
-            return pipeline.Push(new ImuSample(time, headFrameSpecificForce.x, headFrameSpecificForce.y, headFrameSpecificForce.z));
-        }
+            => Runner.Push(new ImuSample(time, headFrameSpecificForce.x, headFrameSpecificForce.y, headFrameSpecificForce.z));
 
-        void LateUpdate()
+        void Update()
         {
-            if (pipeline == null) return;
-            var f = pipeline.Latest;
+            if (runner == null) return;
+            runner.Step(scheduler);
+            var f = runner.Latest;
             if (f.State != lastState)
             {
                 var old = lastState;
@@ -111,10 +139,35 @@ namespace HeadGait.Unity
                 StateChanged?.Invoke(old, f.State);
             }
             if (animator == null) return;
-            if (!string.IsNullOrEmpty(stateParameter)) animator.SetInteger(stateParameter, (int)f.State);
-            if (!string.IsNullOrEmpty(stridePhaseParameter)) animator.SetFloat(stridePhaseParameter, (float)f.StridePosition);
-            if (!string.IsNullOrEmpty(walkWeightParameter)) animator.SetFloat(walkWeightParameter, (float)f.WalkWeight);
-            if (!string.IsNullOrEmpty(stepPeriodParameter)) animator.SetFloat(stepPeriodParameter, (float)f.StepPeriod);
+            if (writer == null)
+            {
+                // Read the controller's parameter list once; it is empty until the Animator has initialised.
+                if (!animator.isInitialized) return;
+                writer = new AnimatorParameterWriter(animator.parameters, stateParameter, stridePhaseParameter, walkWeightParameter, stepPeriodParameter);
+                sink = new AnimatorSink(animator);
+                if (writer.Problem != null) Debug.LogWarning($"HeadGait: {writer.Problem}.", this);
+            }
+            writer.Write(f, sink);
         }
+
+        void OnDisable()
+        {
+            // Never leave a job running against a component that may be destroyed.
+            if (runner != null) runner.Complete(scheduler);
+        }
+
+        void OnDestroy() => ReleaseRunner();
+
+        void ReleaseRunner()
+        {
+            if (runner == null) return;
+            runner.Complete(scheduler);
+            scheduler.Dispose();
+            runner = null;
+            scheduler = null;
+        }
+
+        static ModelAsset Text(TextAsset a) => a == null ? null : new ModelAsset(a.name, a.text, null);
+        static ModelAsset Binary(TextAsset a) => a == null ? null : new ModelAsset(a.name, null, a.bytes);
     }
 }

@@ -4,7 +4,8 @@ namespace HeadGait.Unity
 {
     /// <summary>
     /// Replays a recorded CSV (TextAsset) into a <see cref="GaitLegAnimator"/> in real time, so an avatar can be
-    /// checked in the editor without a headset. Set the HeadImuSource (if any) to External meanwhile.
+    /// checked in the editor without a headset. Set the HeadImuSource (if any) to External meanwhile. Each enable and each
+    /// loop starts the animator's stream over (see <see cref="RecordingPlayback"/>).
     /// </summary>
     [AddComponentMenu("HeadGait/Recording Player")]
     public sealed class RecordingPlayer : MonoBehaviour
@@ -14,18 +15,17 @@ namespace HeadGait.Unity
         [SerializeField] bool loop = true;
         [SerializeField, Range(0.1f, 4f)] float speed = 1f;
 
-        Recording data;
-        int next;
-        double clock;
-        double offset;
+        RecordingPlayback playback;
 
         /// <summary>Ground truth of the row last played, when the recording has it.</summary>
-        public RecordedSample LastRow { get; private set; }
+        public RecordedSample LastRow => playback != null ? playback.LastRow : default;
 
         void OnEnable()
         {
             if (target == null) target = GetComponent<GaitLegAnimator>();
+            playback = null;
             if (recording == null) return;
+            Recording data;
             try
             {
                 data = RecordingCsv.Parse(recording.text, recording.name);
@@ -33,35 +33,18 @@ namespace HeadGait.Unity
             catch (RecordingFormatException e)
             {
                 Debug.LogError($"HeadGait: cannot play '{recording.name}': {e.Message}", this);
-                data = null;
                 return;
             }
             if (data.Warnings.Count > 0) Debug.LogWarning($"HeadGait: '{recording.name}': {data.Warnings.Count} row(s) skipped, first: {data.Warnings[0]}", this);
-            Restart();
-        }
-
-        void Restart()
-        {
-            next = 0;
-            clock = 0;
-            offset = data.Samples.Count > 0 ? data.Samples[0].Imu.Time : 0;
+            playback = new RecordingPlayback(data) { Loop = loop };
+            playback.Restart(target != null ? target.Runner : null);
         }
 
         void Update()
         {
-            if (data == null || target == null || data.Samples.Count == 0) return;
-            clock += Time.deltaTime * speed;
-            while (next < data.Samples.Count && data.Samples[next].Imu.Time - offset <= clock)
-            {
-                var row = data.Samples[next++];
-                LastRow = row;
-                target.Push(row.Imu.Time, new Vector3((float)row.Imu.X, (float)row.Imu.Y, (float)row.Imu.Z));
-            }
-            if (next >= data.Samples.Count && loop)
-            {
-                target.Build();
-                Restart();
-            }
+            if (playback == null || target == null) return;
+            playback.Loop = loop;
+            playback.Advance(Time.deltaTime * speed, target.Runner);
         }
     }
 }

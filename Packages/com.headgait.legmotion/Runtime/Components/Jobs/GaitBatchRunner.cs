@@ -1,0 +1,161 @@
+using System;
+
+namespace HeadGait.Unity
+{
+    /// <summary>
+    /// Runs a <see cref="GaitPipeline"/> off the main thread in one batch per frame and decides what runs when; plain C#,
+    /// so it is tested without Unity (the Unity job is a thin wrapper, <see cref="GaitJobScheduler"/>).
+    /// <list type="bullet">
+    /// <item>Main thread: <see cref="Push"/> hands each sensor sample over (into a buffer that is reused, so no allocation
+    /// once it has grown to the largest batch seen); <see cref="Step"/>, once per frame, completes the batch scheduled last
+    /// frame, publishes its latest animator frame (<see cref="Latest"/>) and schedules the samples handed over since.</item>
+    /// <item>Worker: <see cref="ExecuteBatch"/> feeds the batch to the pipeline, which resamples to its 100 Hz grid and
+    /// classifies every grid step, so classification follows sensor time, not the frame rate.</item>
+    /// </list>
+    /// A frame never waits for samples: a frame without new samples schedules nothing and shows the last published frame.
+    /// The published frame is one frame behind the samples (the batch handed over this frame is read next frame).
+    /// Not thread-safe beyond that split: call everything except ExecuteBatch from the main thread.
+    /// </summary>
+    public sealed class GaitBatchRunner
+    {
+        readonly GaitPipeline pipeline;
+        ImuSample[] pending;
+        int pendingCount;
+        ImuSample[] batch;
+        int batchCount;
+
+        bool inFlight;
+        int generation;           // bumped by Reset: a batch of an older generation is discarded
+        int batchGeneration;
+        bool resetPipeline;       // Reset came while a batch ran: reset the pipeline before the next one
+        double sourceLag;
+
+        // Written by the batch, read on the main thread only after it completed.
+        AnimatorFrame batchLatest;
+        GaitPrediction batchPrediction;
+        long batchWindows;
+
+        public GaitBatchRunner(GaitPipeline pipeline, int initialCapacity = 256)
+        {
+            this.pipeline = pipeline ?? throw new ArgumentNullException(nameof(pipeline));
+            if (initialCapacity < 1) throw new ArgumentOutOfRangeException(nameof(initialCapacity));
+            pending = new ImuSample[initialCapacity];
+            batch = new ImuSample[initialCapacity];
+            sourceLag = pipeline.SourceLag;
+            Latest = Standing(0);
+        }
+
+        /// <summary>The pipeline the batches run; read it only while <see cref="InFlight"/> is false.</summary>
+        public GaitPipeline Pipeline => pipeline;
+
+        /// <summary>The animator frame of the last completed batch: what the avatar shows.</summary>
+        public AnimatorFrame Latest { get; private set; }
+
+        /// <summary>The prediction behind <see cref="Latest"/>.</summary>
+        public GaitPrediction LatestPrediction { get; private set; }
+
+        /// <summary>Windows classified by completed batches (one per 100 Hz grid step of sensor time).</summary>
+        public long Windows { get; private set; }
+
+        /// <summary>Samples handed over and not yet scheduled.</summary>
+        public int Pending => pendingCount;
+
+        /// <summary>True between scheduling a batch and completing it.</summary>
+        public bool InFlight => inFlight;
+
+        /// <summary>Samples refused at hand-over because a value was NaN or infinite (the pipeline would skip them too).</summary>
+        public int RejectedNotFinite { get; private set; }
+
+        /// <summary>
+        /// Passed to <see cref="GaitPipeline.SourceLag"/> before the next batch (seconds; the pose path sets it), so it never
+        /// changes under a running batch.
+        /// </summary>
+        public double SourceLag
+        {
+            get => sourceLag;
+            set => sourceLag = value;
+        }
+
+        /// <summary>
+        /// Hands one sample over (main thread). <see cref="SampleOutcome.Accepted"/> means queued for the next batch, where
+        /// the pipeline judges it (its counters: <c>Pipeline.Preprocessor</c>); a non-finite sample is refused here.
+        /// </summary>
+        public SampleOutcome Push(in ImuSample sample)
+        {
+            if (!sample.IsFinite)
+            {
+                RejectedNotFinite++;
+                return SampleOutcome.SkippedNotFinite;
+            }
+            if (pendingCount == pending.Length) Array.Resize(ref pending, pending.Length * 2);
+            pending[pendingCount++] = sample;
+            return SampleOutcome.Accepted;
+        }
+
+        /// <summary>
+        /// The stream starts over (a recording restarts, the source changes): drops what was handed over, discards the batch
+        /// in flight when it completes, resets the pipeline before the next batch and shows the standing pose at once.
+        /// </summary>
+        public void Reset()
+        {
+            pendingCount = 0;
+            generation++;
+            if (inFlight) resetPipeline = true;
+            else pipeline.Reset();
+            Latest = Standing(0);
+            LatestPrediction = default;
+        }
+
+        /// <summary>
+        /// The frame's work (main thread): completes and publishes last frame's batch, then schedules the samples handed over
+        /// since, if any. Never waits on anything scheduled in this call.
+        /// </summary>
+        public void Step(IGaitBatchScheduler scheduler)
+        {
+            if (scheduler == null) throw new ArgumentNullException(nameof(scheduler));
+            Complete(scheduler);
+            if (pendingCount == 0) return;
+            if (resetPipeline)
+            {
+                pipeline.Reset();
+                resetPipeline = false;
+            }
+            pipeline.SourceLag = sourceLag;
+            // Swap buffers: the batch owns the samples now, new hand-overs go to the other buffer.
+            var full = pending;
+            pending = batch;
+            batch = full;
+            batchCount = pendingCount;
+            pendingCount = 0;
+            batchGeneration = generation;
+            inFlight = true;
+            scheduler.Schedule();
+        }
+
+        /// <summary>Completes the batch in flight, if any, and publishes it (main thread; on disable, before a rebuild).</summary>
+        public void Complete(IGaitBatchScheduler scheduler)
+        {
+            if (!inFlight) return;
+            scheduler.Complete();
+            inFlight = false;
+            if (batchGeneration != generation) return; // reset while it ran: its frames belong to the old stream
+            Latest = batchLatest;
+            LatestPrediction = batchPrediction;
+            Windows += batchWindows;
+        }
+
+        /// <summary>The batch itself (worker thread): every sample through the pipeline, in order.</summary>
+        public void ExecuteBatch()
+        {
+            long before = pipeline.Windows;
+            for (int i = 0; i < batchCount; i++) pipeline.Push(batch[i]);
+            batchLatest = pipeline.Latest;
+            batchPrediction = pipeline.LatestPrediction;
+            batchWindows = pipeline.Windows - before;
+            batchCount = 0;
+        }
+
+        static AnimatorFrame Standing(double time)
+            => new AnimatorFrame(time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+    }
+}

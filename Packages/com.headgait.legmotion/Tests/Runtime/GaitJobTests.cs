@@ -1,0 +1,262 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using HeadGait.Synthetic;
+using HeadGait.Unity;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>
+    /// The fixed-rate job path (<see cref="GaitBatchRunner"/> with <see cref="GaitJobScheduler"/>): whatever the frame rate and
+    /// however the sensor samples arrive, it must classify exactly what the plain core pipeline classifies, publish the frame
+    /// of the samples handed over one frame earlier, never wait on work scheduled in the same frame, and allocate nothing
+    /// per frame once warm.
+    /// </summary>
+    public class GaitJobTests
+    {
+        static string ModelsFolder
+        {
+            get
+            {
+                string f = SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory);
+                Assert.That(f, Is.Not.Null, "the package's Models folder was not found above the test directory");
+                return f;
+            }
+        }
+
+        static CorrelationTemplate template;
+        static CorrelationTemplate Template => template ?? (template = CorrelationTemplate.Load(Path.Combine(ModelsFolder, GaitModels.CorrelationFile)));
+
+        static IGaitClassifier Cor() => new CorrelationClassifier(Template);
+
+        static IGaitClassifier Blstm() => new BlstmClassifier(ModelFile.Load(Path.Combine(ModelsFolder, GaitModels.BlstmFile)));
+
+        /// <summary>Stand, walk (with a turn), stand, walk: every animator state is visited.</summary>
+        static List<ImuSample> Stream(bool irregular, double seconds = 14)
+        {
+            var script = new StreamScript { StartTime = 0 };
+            double walk = (seconds - 3) / 2;
+            script.Stand(1.5).Walk(walk, Foot.Left, 20).Stand(1.5).Walk(walk, Foot.Right);
+            if (irregular)
+            {
+                // Slower, jittery, with dropped samples: frames see 0, 1 or several samples.
+                script.SampleRate = 83;
+                script.TimestampJitter = 0.003;
+                script.DropProbability = 0.12;
+            }
+            var rec = WalkingStreamGenerator.Generate(irregular ? "irregular" : "regular", new GaitSubject(), script, irregular ? 7UL : 3UL);
+            var list = new List<ImuSample>();
+            foreach (var r in rec.Samples) list.Add(r.Imu);
+            return list;
+        }
+
+        static string Describe(GaitPrediction p, AnimatorFrame f)
+            => string.Format(CultureInfo.InvariantCulture, "{0:R} {1} {2:R} {3:R} {4:R} {5} {6} | {7:R} {8} {9:R} {10:R} {11:R} {12} {13} {14}",
+                p.Time, p.IsWalking, p.StridePosition, p.StepPeriod, p.Confidence, p.Left, p.Right,
+                f.Time, f.State, f.StridePosition, f.WalkWeight, f.StepPeriod, f.Left, f.Right, f.Resynchronised);
+
+        static List<string> Record(GaitPipeline pipeline)
+        {
+            var log = new List<string>();
+            pipeline.FrameProduced += (p, f) => log.Add(Describe(p, f));
+            return log;
+        }
+
+        [Test]
+        public void EveryFrameRateGivesThePlainPipelinesPredictions(
+            [Values(60, 72, 90, 120)] int fps, [Values(false, true)] bool irregular)
+        {
+            var samples = Stream(irregular);
+
+            var plain = new GaitPipeline(Cor());
+            var expected = Record(plain);
+            // The plain pipeline's frame after each sample count, to check what each video frame shows.
+            var plainLatest = new AnimatorFrame[samples.Count + 1];
+            plainLatest[0] = plain.Latest;
+            for (int i = 0; i < samples.Count; i++)
+            {
+                plain.Push(samples[i]);
+                plainLatest[i + 1] = plain.Latest;
+            }
+
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()), initialCapacity: 4);
+            var actual = Record(runner.Pipeline);
+            using (var scheduler = new GaitJobScheduler(runner))
+            {
+                int handed = 0, handedBeforeLastStep = 0;
+                double end = samples[samples.Count - 1].Time + 0.1;
+                for (int frame = 1; frame / (double)fps < end; frame++)
+                {
+                    double now = frame / (double)fps;
+                    while (handed < samples.Count && samples[handed].Time <= now) runner.Push(samples[handed++]);
+                    runner.Step(scheduler);
+                    // What the avatar shows this frame: the pipeline's state after the samples handed over last frame.
+                    Assert.That(Describe(default, runner.Latest), Is.EqualTo(Describe(default, plainLatest[handedBeforeLastStep])),
+                        $"frame {frame} at {fps} fps");
+                    handedBeforeLastStep = handed;
+                }
+                Assert.That(handed, Is.EqualTo(samples.Count));
+                runner.Step(scheduler); // publishes the last batch
+                Assert.That(runner.InFlight, Is.False);
+            }
+
+            Assert.That(expected.Count, Is.GreaterThan(samples.Count / 2), "the stream produced windows");
+            Assert.That(actual, Is.EqualTo(expected));
+            Assert.That(runner.Windows, Is.EqualTo(plain.Windows));
+            Assert.That(runner.Latest.State, Is.EqualTo(plain.Latest.State));
+        }
+
+        [Test]
+        public void BlstmThroughTheJobGivesThePlainPipelinesPredictions()
+        {
+            var samples = Stream(irregular: true, seconds: 8);
+            var plain = new GaitPipeline(Blstm());
+            var expected = Record(plain);
+            foreach (var s in samples) plain.Push(s);
+
+            var runner = new GaitBatchRunner(new GaitPipeline(Blstm()));
+            var actual = Record(runner.Pipeline);
+            using (var scheduler = new GaitJobScheduler(runner))
+            {
+                int handed = 0;
+                for (int frame = 1; handed < samples.Count; frame++)
+                {
+                    while (handed < samples.Count && samples[handed].Time <= frame / 72.0) runner.Push(samples[handed++]);
+                    runner.Step(scheduler);
+                }
+                runner.Step(scheduler);
+            }
+            Assert.That(expected.Count, Is.GreaterThan(100));
+            Assert.That(actual, Is.EqualTo(expected));
+        }
+
+        /// <summary>Runs the batch only when completed, on the completing thread: the latest a worker could, and countable by the allocation test.</summary>
+        sealed class CountingScheduler : IGaitBatchScheduler
+        {
+            readonly GaitBatchRunner runner;
+            bool scheduled;
+            public int Schedules, Completes;
+
+            public CountingScheduler(GaitBatchRunner runner) => this.runner = runner;
+
+            public void Schedule()
+            {
+                if (scheduled) throw new InvalidOperationException("scheduled twice without completing");
+                scheduled = true;
+                Schedules++;
+            }
+
+            public void Complete()
+            {
+                if (!scheduled) return;
+                scheduled = false;
+                Completes++;
+                runner.ExecuteBatch();
+            }
+        }
+
+        [Test]
+        public void AFrameNeverWaitsOnWhatItScheduled()
+        {
+            var samples = Stream(irregular: false, seconds: 6);
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            var scheduler = new CountingScheduler(runner);
+
+            foreach (var s in samples) if (s.Time <= 3) runner.Push(s);
+            runner.Step(scheduler);
+            Assert.That(scheduler.Schedules, Is.EqualTo(1));
+            Assert.That(scheduler.Completes, Is.EqualTo(0), "the batch scheduled this frame was waited on");
+            Assert.That(runner.Windows, Is.EqualTo(0), "nothing is published before the next frame");
+            Assert.That(runner.Pending, Is.EqualTo(0));
+
+            // Frames without new samples (late or missing sensor data): last frame's batch is published, nothing new is scheduled.
+            runner.Step(scheduler);
+            Assert.That(scheduler.Completes, Is.EqualTo(1));
+            Assert.That(runner.Windows, Is.GreaterThan(200));
+            var shown = runner.Latest;
+            for (int i = 0; i < 5; i++) runner.Step(scheduler);
+            Assert.That(scheduler.Schedules, Is.EqualTo(1));
+            Assert.That(Describe(default, runner.Latest), Is.EqualTo(Describe(default, shown)));
+        }
+
+        [Test]
+        public void ResetDiscardsTheBatchInFlightAndStandsAtOnce()
+        {
+            var samples = Stream(irregular: false, seconds: 10);
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            var scheduler = new CountingScheduler(runner);
+            int i = 0;
+            for (; samples[i].Time <= 4.5; i++) runner.Push(samples[i]);
+            runner.Step(scheduler);
+            runner.Step(scheduler);
+            Assert.That(runner.Latest.State, Is.Not.EqualTo(LocomotionState.Standing), "walking before the reset");
+
+            for (; samples[i].Time <= 4.9; i++) runner.Push(samples[i]);
+            runner.Step(scheduler); // in flight
+            runner.Reset();
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Standing));
+            runner.Step(scheduler); // completes the old batch: discarded
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Standing));
+
+            // The same stream again from its start is a new stream, not late samples.
+            var preprocessor = runner.Pipeline.Preprocessor;
+            long skippedBefore = preprocessor.Skipped, rebasesBefore = preprocessor.Rebases;
+            for (int k = 0; samples[k].Time <= 4.5; k++) runner.Push(samples[k]);
+            runner.Step(scheduler);
+            runner.Step(scheduler);
+            Assert.That(preprocessor.Skipped, Is.EqualTo(skippedBefore), "samples of the new stream skipped");
+            Assert.That(preprocessor.Rebases, Is.EqualTo(rebasesBefore), "the new stream was taken for a clock jump of the old one");
+            Assert.That(runner.Latest.State, Is.Not.EqualTo(LocomotionState.Standing), "walking again after the restart");
+        }
+
+        [Test]
+        public void NonFiniteSamplesAreRefusedAtHandOver()
+        {
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            Assert.That(runner.Push(new ImuSample(0.01, double.NaN, 0, 9.8)), Is.EqualTo(SampleOutcome.SkippedNotFinite));
+            Assert.That(runner.Push(new ImuSample(0.02, 0, 0, 9.8)), Is.EqualTo(SampleOutcome.Accepted));
+            Assert.That(runner.Pending, Is.EqualTo(1));
+            Assert.That(runner.RejectedNotFinite, Is.EqualTo(1));
+        }
+
+        static long AllocatedPerFrameLoop(GaitBatchRunner runner, IGaitBatchScheduler scheduler, List<ImuSample> samples, int fps)
+        {
+            int handed = 0, frame = 1;
+            double warmUp = 4;
+            // Warm up: buffers grow to their largest batch, the classifier's and animator's lists fill.
+            for (; frame / (double)fps < warmUp; frame++)
+            {
+                while (handed < samples.Count && samples[handed].Time <= frame / (double)fps) runner.Push(samples[handed++]);
+                runner.Step(scheduler);
+            }
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (; handed < samples.Count; frame++)
+            {
+                while (handed < samples.Count && samples[handed].Time <= frame / (double)fps) runner.Push(samples[handed++]);
+                runner.Step(scheduler);
+            }
+            runner.Step(scheduler);
+            return GC.GetAllocatedBytesForCurrentThread() - before;
+        }
+
+        [Test]
+        public void SteadyStateFramesAllocateNothing([Values("cor", "thr", "blstm")] string classifier)
+        {
+            var samples = Stream(irregular: true, seconds: 9);
+            IGaitClassifier make() => classifier == "cor" ? Cor() : classifier == "thr" ? new ThresholdClassifier() : Blstm();
+
+            // The batch runs on this thread here, so its allocations count too.
+            var runner = new GaitBatchRunner(new GaitPipeline(make()));
+            long bytes = AllocatedPerFrameLoop(runner, new CountingScheduler(runner), samples, 90);
+            Assert.That(runner.Windows, Is.GreaterThan(700));
+            Assert.That(bytes, Is.EqualTo(0), "bytes allocated by frames after warm-up (main thread and batch)");
+
+            // The Unity job wrapper's main-thread side.
+            var jobRunner = new GaitBatchRunner(new GaitPipeline(make()));
+            using (var scheduler = new GaitJobScheduler(jobRunner))
+                Assert.That(AllocatedPerFrameLoop(jobRunner, scheduler, samples, 90), Is.EqualTo(0), "bytes allocated by frames through the job");
+        }
+    }
+}
