@@ -91,7 +91,7 @@ namespace HeadGait.Tooling
                 case ".prefab": return "PrefabImporter";
                 case ".anim":
                 case ".controller":
-                case ".overrideController":
+                case ".overridecontroller":
                 case ".mat":
                 case ".asset": return "NativeFormatImporter";
                 // .onnx is claimed by Sentis' scripted importer when it is installed; without it Unity keeps the file as is.

@@ -148,6 +148,8 @@ namespace HeadGait.Tests
             var map = LoadPhaseMap(package, problems);
             foreach (var controller in assets.Where(a => a.EndsWith(".controller", StringComparison.Ordinal)))
                 CheckController(controller, Load(controller), guids, Load, problems);
+            foreach (var over in assets.Where(a => a.EndsWith(".overrideController", StringComparison.Ordinal)))
+                CheckOverrideController(over, Load(over), guids, Load, problems);
             if (map != null)
                 foreach (var clip in assets.Where(a => a.EndsWith(".anim", StringComparison.Ordinal)))
                     CheckClipContacts(clip, Load(clip), map, problems);
@@ -327,6 +329,31 @@ namespace HeadGait.Tests
             foreach (var e in found.Except(expected)) problems.Add($"{file}: transition {e} is not one the core's state machine makes");
         }
 
+        /// <summary>An override controller replaces each clip of its controller with a clip of the same name.</summary>
+        static void CheckOverrideController(string file, List<UnityObject> docs, Dictionary<string, string> guids, Func<string, List<UnityObject>> load, List<string> problems)
+        {
+            var over = docs.FirstOrDefault(d => d.ClassId == 221);
+            if (over == null)
+            {
+                problems.Add($"{file}: no AnimatorOverrideController (class 221)");
+                return;
+            }
+            string ClipName(YamlNode reference)
+                => reference is YamlMappingNode r && Get(r, "guid") is string g && guids.TryGetValue(g, out var clip) && clip.EndsWith(".anim", StringComparison.Ordinal)
+                    ? load(clip).FirstOrDefault(d => d.ClassId == 74)?.Scalar("m_Name") : null;
+            var overridden = new HashSet<string>();
+            if (over.Node("m_Clips") is YamlSequenceNode pairs)
+                foreach (YamlMappingNode pair in pairs.Children)
+                {
+                    string original = ClipName(pair.Children[new YamlScalarNode("m_OriginalClip")]);
+                    string replacement = ClipName(pair.Children[new YamlScalarNode("m_OverrideClip")]);
+                    if (original == null || original != replacement) problems.Add($"{file}: clip '{original}' is overridden by '{replacement}'");
+                    else overridden.Add(original);
+                }
+            foreach (var l in GaitClips.All)
+                if (!overridden.Contains(GaitClips.Name(l))) problems.Add($"{file}: '{GaitClips.Name(l)}' is not overridden");
+        }
+
         /// <summary>
         /// Rebuilds the mannequin's pose at each key of a clip from its curves and checks each foot is down at its initial
         /// contact and still in the air one key before, at the stride positions of the phase map.
@@ -342,17 +369,39 @@ namespace HeadGait.Tests
             double length = double.Parse(Get(settings, "m_StopTime") ?? "0", CultureInfo.InvariantCulture);
             var euler = Curves(clip.Node("m_EulerCurves"));
             var position = Curves(clip.Node("m_PositionCurves"));
+            var muscles = FloatCurves(clip.Node("m_FloatCurves"));
+            bool humanoid = muscles.ContainsKey(HumanoidMuscles.UpperLegFrontBack(Foot.Left).Name);
+            double? Muscle(string attribute, double time)
+            {
+                if (!muscles.TryGetValue(attribute, out var keys)) return null;
+                foreach (var k in keys)
+                    if (Math.Abs(k.T - time) < 1e-6) return k.V;
+                // A constant is written with its two end keys only.
+                return keys.Count > 0 && keys.All(k => k.V == keys[0].V) ? keys[0].V : (double?)null;
+            }
 
             double? Value(Dictionary<string, List<(double T, double[] V)>> curves, string path, int axis, double time)
             {
                 if (!curves.TryGetValue(path, out var keys)) return null;
                 foreach (var k in keys)
                     if (Math.Abs(k.T - time) < 1e-6) return k.V[axis];
-                return null;
+                return keys.Count > 0 && keys.All(k => k.V[axis] == keys[0].V[axis]) ? keys[0].V[axis] : (double?)null;
             }
             double? FootHeight(Foot foot, double stride)
             {
                 double t = stride * length;
+                if (humanoid)
+                {
+                    // Muscles back to angles (HumanoidMuscles), the body's height and tilt from RootT.y and RootQ.x.
+                    var fb = Muscle(HumanoidMuscles.UpperLegFrontBack(foot).Name, t);
+                    var st = Muscle(HumanoidMuscles.LowerLegStretch(foot).Name, t);
+                    var ud = Muscle(HumanoidMuscles.FootUpDown(foot).Name, t);
+                    var y = Muscle("RootT.y", t);
+                    var qx = Muscle("RootQ.x", t);
+                    if (fb == null || st == null || ud == null || y == null || qx == null) return null;
+                    var angles = HumanoidMuscles.Leg(foot, fb.Value, st.Value, ud.Value);
+                    return y.Value * Mannequin.StandingHipHeight + Mannequin.Leg(angles, 2 * Math.Asin(qx.Value) * 180 / Math.PI).Lowest;
+                }
                 var hip = Value(position, Mannequin.Hips, 1, t);
                 var tilt = Value(euler, Mannequin.Hips, 0, t);
                 var h = Value(euler, Mannequin.UpperLeg(foot), 0, t);
@@ -395,6 +444,22 @@ namespace HeadGait.Tests
                             new[] { Num(v, "x"), Num(v, "y"), Num(v, "z") }));
                     }
                 curves[path] = keys;
+            }
+            return curves;
+        }
+
+        static Dictionary<string, List<(double T, double V)>> FloatCurves(YamlNode node)
+        {
+            var curves = new Dictionary<string, List<(double, double)>>();
+            if (!(node is YamlSequenceNode seq)) return curves;
+            foreach (YamlMappingNode c in seq.Children)
+            {
+                var keys = new List<(double, double)>();
+                var curve = c.Children[new YamlScalarNode("curve")] as YamlMappingNode;
+                if (curve?.Children[new YamlScalarNode("m_Curve")] is YamlSequenceNode ks)
+                    foreach (YamlMappingNode k in ks.Children)
+                        keys.Add((double.Parse(Get(k, "time"), CultureInfo.InvariantCulture), double.Parse(Get(k, "value"), CultureInfo.InvariantCulture)));
+                curves[Get(c, "attribute") ?? ""] = keys;
             }
             return curves;
         }

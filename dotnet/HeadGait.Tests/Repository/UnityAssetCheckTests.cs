@@ -26,7 +26,7 @@ namespace HeadGait.Tests
             try
             {
                 GaitAssetFiles.WriteAll(copy, CorrelationTemplate.Load(Path.Combine(copy, GaitAssetFiles.CorTemplate)).PhaseMap);
-                foreach (var relative in new[] { GaitAssetFiles.Controller, GaitAssetFiles.ClipPath(LocomotionState.Walking), GaitAssetFiles.LegsPrefab, GaitAssetFiles.MannequinPrefab, GaitAssetFiles.SampleScene })
+                foreach (var relative in new[] { GaitAssetFiles.Controller, GaitAssetFiles.ClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidController, GaitAssetFiles.LegsPrefab, GaitAssetFiles.MannequinPrefab, GaitAssetFiles.SampleScene })
                     Assert.That(File.ReadAllText(Path.Combine(copy, relative)), Is.EqualTo(File.ReadAllText(Path.Combine(Package, relative))), relative + " is out of date");
             }
             finally
@@ -59,6 +59,8 @@ namespace HeadGait.Tests
                 Edit(legs, t => t.Replace(corGuid, "0123456789abcdef0123456789abcdef"));
                 Edit(scene, t => t.Replace("m_PrefabInstance: {fileID: " + SampleSceneYaml.PrefabInstanceId + "}", "m_PrefabInstance: {fileID: 42}"));
                 File.WriteAllText(walking, GaitClipYaml.Write(new GaitClips(PhaseMap.Perry), LocomotionState.Walking));
+                File.WriteAllText(Path.Combine(copy, GaitAssetFiles.HumanoidClipPath(LocomotionState.StartWalkRight)), HumanoidClipYaml.Write(new GaitClips(PhaseMap.Perry), LocomotionState.StartWalkRight));
+                Edit(Path.Combine(copy, GaitAssetFiles.HumanoidClipPath(LocomotionState.Standing)), t => t.Replace("m_Name: Standing", "m_Name: Idle"));
                 string misnamed = Path.Combine(copy, "Runtime", "Components", "Misnamed.cs");
                 File.WriteAllText(misnamed, "class SomethingElse {}");
                 File.WriteAllText(misnamed + ".meta", UnityMeta.Text(misnamed, "abcdefabcdefabcdefabcdefabcdefab"));
@@ -76,6 +78,8 @@ namespace HeadGait.Tests
                 Assert.That(problems, Does.Contain("guid 0123456789abcdef0123456789abcdef resolves to no .meta"));
                 Assert.That(problems, Does.Contain("local fileID 42 resolves to nothing"));
                 Assert.That(problems, Does.Contain("Walking.anim: no key at the Right initial contact").Or.Contain("Walking.anim: the Right foot does not land"));
+                Assert.That(problems, Does.Contain("Humanoid/Start Walk Right.anim: no key at the Right initial contact").Or.Contain("Humanoid/Start Walk Right.anim: the Right foot does not land"));
+                Assert.That(problems, Does.Contain("clip 'Standing' is overridden by 'Idle'"));
             }
             finally
             {
@@ -111,7 +115,7 @@ namespace HeadGait.Tests
         static string CopyOfPackage()
         {
             string copy = Path.Combine(Path.GetTempPath(), "headgait-assets-" + Guid.NewGuid().ToString("N"));
-            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Prefabs", "Runtime/Components", "Samples~/Legs", "Samples~/Recordings/eval" })
+            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Animation/Humanoid", "Runtime/Prefabs", "Runtime/Components", "Samples~/Legs", "Samples~/Recordings/eval" })
             {
                 foreach (var file in Directory.GetFiles(Path.Combine(Package, folder)))
                 {

@@ -41,6 +41,12 @@ namespace HeadGait.Tooling
 
         public static string ClipPath(LocomotionState clip) => AnimationFolder + "/" + GaitClips.Name(clip) + ".anim";
 
+        /// <summary>The Humanoid (muscle) version of a clip, for the developer's own avatar.</summary>
+        public static string HumanoidClipPath(LocomotionState clip) => AnimationFolder + "/Humanoid/" + GaitClips.Name(clip) + ".anim";
+
+        /// <summary>The controller with every clip replaced by its Humanoid version.</summary>
+        public const string HumanoidController = AnimationFolder + "/HeadGait Legs Humanoid.overrideController";
+
         /// <summary>Writes every generated asset under the package folder; returns the paths written (relative).</summary>
         public static List<string> WriteAll(string package, PhaseMap map)
         {
@@ -70,10 +76,35 @@ namespace HeadGait.Tooling
                 clipGuids[clip] = GuidOf(package, ClipPath(clip));
             }
             Write(Controller, GaitControllerYaml.Write(clipGuids), ControllerGuid);
+            var humanoidGuids = new Dictionary<LocomotionState, string>();
+            foreach (var clip in GaitClips.All)
+            {
+                Write(HumanoidClipPath(clip), HumanoidClipYaml.Write(clips, clip));
+                humanoidGuids[clip] = GuidOf(package, HumanoidClipPath(clip));
+            }
+            Write(HumanoidController, OverrideControllerYaml(clipGuids, humanoidGuids));
             Write(MannequinPrefab, MannequinPrefabYaml(), MannequinPrefabGuid);
             Write(LegsPrefab, LegsPrefabYaml(package), LegsPrefabGuid);
             Write(SampleScene, SampleSceneYaml.Write(package));
             return written;
+        }
+
+        /// <summary>
+        /// An AnimatorOverrideController (class 221): the package's controller (m_Controller) with each clip
+        /// (m_OriginalClip) played as another (m_OverrideClip).
+        /// </summary>
+        static string OverrideControllerYaml(Dictionary<LocomotionState, string> original, Dictionary<LocomotionState, string> replacement)
+        {
+            var sb = new StringBuilder(UnityYaml.Header);
+            sb.Append(UnityYaml.Document(221, 22100000, "AnimatorOverrideController"));
+            sb.Append("  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n");
+            sb.Append("  m_Name: HeadGait Legs Humanoid\n  m_Controller: ").Append(UnityYaml.Ref(GaitControllerYaml.ControllerId, ControllerGuid, 2)).Append("\n  m_Clips:\n");
+            foreach (var clip in GaitClips.All)
+            {
+                sb.Append("  - m_OriginalClip: ").Append(UnityYaml.Ref(7400000, original[clip], 2)).Append('\n');
+                sb.Append("    m_OverrideClip: ").Append(UnityYaml.Ref(7400000, replacement[clip], 2)).Append('\n');
+            }
+            return sb.ToString();
         }
 
         public static string GuidOf(string package, string relative)

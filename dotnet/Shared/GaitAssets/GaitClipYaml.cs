@@ -82,7 +82,7 @@ namespace HeadGait.Tooling
         }
 
         /// <summary>The clip's pose at a key: 1.0 is the end of the stride, approached from below.</summary>
-        static BodyPose PoseAt(GaitClips clips, LocomotionState clip, double u) => clips.Pose(clip, u >= 1 ? 1 - 1e-12 : u);
+        public static BodyPose PoseAt(GaitClips clips, LocomotionState clip, double u) => clips.Pose(clip, u >= 1 ? 1 - 1e-12 : u);
 
         public static string Write(GaitClips clips, LocomotionState clip)
         {
