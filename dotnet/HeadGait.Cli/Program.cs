@@ -17,6 +17,7 @@ namespace HeadGait.Cli
                 FromBvhCommand.Build(),
                 GenerateCommand.Build(),
                 UnityMetaCommand.Build(),
+                ClipsCommand.Build(),
                 StudyCommand.Build(),
             };
             try

@@ -15,14 +15,23 @@ namespace HeadGait.Tooling
     {
         static readonly Regex GuidLine = new Regex(@"^guid: ([0-9a-f]{32})\s*$", RegexOptions.Multiline);
 
+        /// <summary>A package's samples folder: not imported itself, but Unity copies each sample in it into Assets.</summary>
+        public const string SamplesFolder = "Samples~";
+
         /// <summary>
         /// Files and folders under <paramref name="root"/> that Unity imports: everything except hidden entries (names
-        /// starting with '.'), folders ending in '~' and what they hold, and .meta files themselves.
+        /// starting with '.'), folders ending in '~' and what they hold, and .meta files themselves; plus what each sample in
+        /// Samples~ holds (Unity copies Samples~/&lt;sample&gt;/ with its .meta files into Assets on import, so scenes and
+        /// prefabs there keep their references). The sample folders themselves are not copied with a .meta.
         /// </summary>
         public static List<string> ImportedEntries(string root)
         {
             var list = new List<string>();
             Walk(root, list);
+            string samples = Path.Combine(root, SamplesFolder);
+            if (Directory.Exists(samples))
+                foreach (var sample in Directory.GetDirectories(samples))
+                    if (!Ignored(Path.GetFileName(sample))) Walk(sample, list);
             list.Sort(StringComparer.Ordinal);
             return list;
         }
@@ -46,8 +55,15 @@ namespace HeadGait.Tooling
 
         static bool InHiddenFolder(string root, string path)
         {
-            foreach (var part in path.Substring(root.Length).Split(new[] { Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar }, StringSplitOptions.RemoveEmptyEntries))
-                if (Ignored(part) || part.EndsWith("~", StringComparison.Ordinal)) return true;
+            var parts = path.Substring(root.Length).Split(new[] { Path.DirectorySeparatorChar, Path.AltDirectorySeparatorChar }, StringSplitOptions.RemoveEmptyEntries);
+            int first = 0;
+            if (parts.Length > 0 && parts[0] == SamplesFolder)
+            {
+                if (parts.Length < 3) return true; // Samples~ and the sample folders themselves
+                first = 2;
+            }
+            for (int i = first; i < parts.Length; i++)
+                if (Ignored(parts[i]) || parts[i].EndsWith("~", StringComparison.Ordinal)) return true;
             return false;
         }
 
@@ -72,8 +88,30 @@ namespace HeadGait.Tooling
                 case ".html":
                 case ".yaml": return "TextScriptImporter";
                 case ".png": return "TextureImporter";
+                case ".prefab": return "PrefabImporter";
+                case ".anim":
+                case ".controller":
+                case ".overridecontroller":
+                case ".mat":
+                case ".asset": return "NativeFormatImporter";
                 // .onnx is claimed by Sentis' scripted importer when it is installed; without it Unity keeps the file as is.
                 default: return "DefaultImporter";
+            }
+        }
+
+        /// <summary>
+        /// The fileID of a native asset's main object: class ID * 100000 (AnimationClip 74, AnimatorController 91,
+        /// AnimatorOverrideController 221, Material 21; https://docs.unity3d.com/Manual/ClassIDReference.html).
+        /// </summary>
+        public static long MainObjectFileId(string path)
+        {
+            switch (Path.GetExtension(path).ToLowerInvariant())
+            {
+                case ".anim": return 7400000;
+                case ".controller": return 9100000;
+                case ".overridecontroller": return 22100000;
+                case ".mat": return 2100000;
+                default: return 11400000; // a ScriptableObject .asset
             }
         }
 
@@ -85,6 +123,7 @@ namespace HeadGait.Tooling
             if (Directory.Exists(path)) lines.Add("folderAsset: yes");
             lines.Add(importer + ":");
             lines.Add("  externalObjects: {}");
+            if (importer == "NativeFormatImporter") lines.Add("  mainObjectFileID: " + MainObjectFileId(path));
             if (importer == "MonoImporter")
             {
                 lines.Add("  serializedVersion: 2");

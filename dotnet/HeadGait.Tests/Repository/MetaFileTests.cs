@@ -30,7 +30,11 @@ namespace HeadGait.Tests
                 File.WriteAllText(Path.Combine(root, "Runtime", "B.cs"), "class B {}");
                 File.WriteAllText(Path.Combine(root, "package.json"), "{}");
                 File.WriteAllText(Path.Combine(root, "Samples~", "Demo", "S.cs"), "class S {}");
-                Assert.That(UnityMeta.WriteMissing(root).Count, Is.EqualTo(4), "Runtime, A.cs, B.cs and package.json; nothing in Samples~");
+                Directory.CreateDirectory(Path.Combine(root, "Documentation~"));
+                File.WriteAllText(Path.Combine(root, "Documentation~", "index.md"), "# doc");
+                var written = UnityMeta.WriteMissing(root);
+                Assert.That(written.Count, Is.EqualTo(5), "Runtime, A.cs, B.cs, package.json and the sample's S.cs; not Samples~, the sample folder or Documentation~");
+                Assert.That(File.Exists(Path.Combine(root, "Samples~", "Demo", "S.cs.meta")));
                 Assert.That(UnityMeta.Problems(root), Is.Empty);
                 Assert.That(File.ReadAllText(Path.Combine(root, "package.json.meta")), Does.Contain("PackageManifestImporter:"));
                 Assert.That(File.ReadAllText(Path.Combine(root, "Runtime.meta")), Does.Contain("folderAsset: yes"));
@@ -40,11 +44,16 @@ namespace HeadGait.Tests
                 File.Copy(Path.Combine(root, "Runtime", "A.cs.meta"), Path.Combine(root, "Runtime", "C.cs.meta"));
                 File.WriteAllText(Path.Combine(root, "Runtime", "C.cs"), "class C {}");
                 File.WriteAllText(Path.Combine(root, "package.json.meta"), File.ReadAllText(Path.Combine(root, "package.json.meta")).Replace("PackageManifestImporter", "TextScriptImporter"));
+                File.Delete(Path.Combine(root, "Samples~", "Demo", "S.cs.meta"));
+                File.WriteAllText(Path.Combine(root, "Samples~", "Demo", "Old.cs.meta"), UnityMeta.Text(Path.Combine(root, "Runtime", "A.cs"), Guid.NewGuid().ToString("N")));
                 var problems = string.Join("\n", UnityMeta.Problems(root));
                 Assert.That(problems, Does.Contain("B.cs: no .meta"));
                 Assert.That(problems, Does.Contain("Gone.cs.meta: orphaned"));
                 Assert.That(problems, Does.Contain("repeats"));
                 Assert.That(problems, Does.Contain("expected the PackageManifestImporter"));
+                Assert.That(problems, Does.Contain("S.cs: no .meta"));
+                Assert.That(problems, Does.Contain("Old.cs.meta: orphaned"));
+                Assert.That(problems, Does.Not.Contain("index.md"));
             }
             finally
             {

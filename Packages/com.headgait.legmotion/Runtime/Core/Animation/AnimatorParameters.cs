@@ -19,5 +19,8 @@ namespace HeadGait
         public const string StepPeriod = "StepPeriod";
 
         public static readonly string[] All = { State, StridePhase, WalkWeight, StepPeriod };
+
+        /// <summary>Whether a parameter is an int (<see cref="State"/>) rather than a float.</summary>
+        public static bool IsInteger(string name) => name == State;
     }
 }

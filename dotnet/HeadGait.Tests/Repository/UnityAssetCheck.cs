@@ -1,0 +1,469 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using HeadGait.Tooling;
+using YamlDotNet.RepresentationModel;
+
+namespace HeadGait.Tests
+{
+    /// <summary>One object of a Unity YAML file: the `--- !u!CLASS &amp;FILEID [stripped]` header and its parsed body.</summary>
+    public sealed class UnityObject
+    {
+        public int ClassId;
+        public long FileId;
+        public bool Stripped;
+        public string Type;
+        public YamlMappingNode Body;
+
+        public string Scalar(string key) => Body.Children.TryGetValue(new YamlScalarNode(key), out var n) && n is YamlScalarNode s ? s.Value ?? "" : null;
+        public YamlNode Node(string key) => Body.Children.TryGetValue(new YamlScalarNode(key), out var n) ? n : null;
+    }
+
+    /// <summary>
+    /// Unity's text assets are YAML streams whose documents carry tags (`--- !u!74 &amp;7400000`, class ID and local fileID)
+    /// and may be `stripped` (a prefab instance's object, holding only its link to the source), which YAML parsers reject.
+    /// The file is split on those headers first, then each body is parsed with YamlDotNet.
+    /// </summary>
+    public static class UnityYamlFile
+    {
+        static readonly Regex Header = new Regex(@"^--- !u!(\d+) &(-?\d+)( stripped)?\s*$", RegexOptions.Multiline);
+
+        public static List<UnityObject> Parse(string text, string file)
+        {
+            text = text.Replace("\r\n", "\n");
+            var matches = Header.Matches(text);
+            if (matches.Count == 0) throw new FormatException($"{file}: no '--- !u!CLASS &ID' document");
+            var list = new List<UnityObject>();
+            for (int i = 0; i < matches.Count; i++)
+            {
+                var m = matches[i];
+                int start = m.Index + m.Length;
+                int end = i + 1 < matches.Count ? matches[i + 1].Index : text.Length;
+                var stream = new YamlStream();
+                try
+                {
+                    stream.Load(new StringReader(text.Substring(start, end - start)));
+                }
+                catch (YamlDotNet.Core.YamlException e)
+                {
+                    throw new FormatException($"{file}: document &{m.Groups[2].Value} is not valid YAML ({e.Message})");
+                }
+                if (stream.Documents.Count != 1 || !(stream.Documents[0].RootNode is YamlMappingNode root) || root.Children.Count != 1)
+                    throw new FormatException($"{file}: document &{m.Groups[2].Value} is not one 'Type:' mapping");
+                var entry = root.Children.First();
+                list.Add(new UnityObject
+                {
+                    ClassId = int.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture),
+                    FileId = long.Parse(m.Groups[2].Value, CultureInfo.InvariantCulture),
+                    Stripped = m.Groups[3].Success,
+                    Type = ((YamlScalarNode)entry.Key).Value,
+                    Body = entry.Value as YamlMappingNode ?? new YamlMappingNode(),
+                });
+            }
+            return list;
+        }
+    }
+
+    /// <summary>
+    /// Checks the Unity assets of the package and its samples without Unity: every reference resolves, scripts are what
+    /// their references say, the controller matches the core's states, parameters and transitions, and the clips' feet land
+    /// where the phase map says. Returns one line per problem, naming the file.
+    /// </summary>
+    public static class UnityAssetCheck
+    {
+        /// <summary>Extensions of Unity's YAML-serialized assets.</summary>
+        static readonly string[] AssetExtensions = { ".unity", ".prefab", ".controller", ".overrideController", ".anim", ".asset", ".mat" };
+
+        /// <summary>
+        /// GUIDs that are not files in the project: Unity's built-in resources ('unity default resources' e000...,
+        /// 'unity_builtin_extra' f000...) and the null GUID. No package other than this one is referred to.
+        /// </summary>
+        static readonly HashSet<string> BuiltinGuids = new HashSet<string>
+        {
+            "0000000000000000e000000000000000", "0000000000000000f000000000000000", "00000000000000000000000000000000",
+        };
+
+        /// <summary>A foot is on the ground when its lowest point is within this height (metres).</summary>
+        const double Contact = 0.002;
+
+        public static List<string> Problems(string package)
+        {
+            var problems = new List<string>();
+            var guids = new Dictionary<string, string>();
+            foreach (var meta in Directory.GetFiles(package, "*.meta", SearchOption.AllDirectories))
+            {
+                if (meta.Contains(Path.DirectorySeparatorChar + "Documentation~" + Path.DirectorySeparatorChar)) continue;
+                var stream = new YamlStream();
+                try
+                {
+                    stream.Load(new StringReader(File.ReadAllText(meta)));
+                }
+                catch (YamlDotNet.Core.YamlException e)
+                {
+                    problems.Add($"{meta}: not YAML ({e.Message})");
+                    continue;
+                }
+                var root = stream.Documents.Count == 1 ? stream.Documents[0].RootNode as YamlMappingNode : null;
+                if (root == null || !root.Children.TryGetValue(new YamlScalarNode("guid"), out var g))
+                {
+                    problems.Add($"{meta}: no guid");
+                    continue;
+                }
+                guids[((YamlScalarNode)g).Value] = meta.Substring(0, meta.Length - ".meta".Length);
+            }
+
+            var cache = new Dictionary<string, List<UnityObject>>();
+            List<UnityObject> Load(string path)
+            {
+                if (!cache.TryGetValue(path, out var docs))
+                {
+                    try
+                    {
+                        docs = UnityYamlFile.Parse(File.ReadAllText(path), path);
+                    }
+                    catch (FormatException e)
+                    {
+                        problems.Add(e.Message);
+                        docs = new List<UnityObject>();
+                    }
+                    cache[path] = docs;
+                }
+                return docs;
+            }
+
+            var assets = Directory.GetFiles(package, "*", SearchOption.AllDirectories)
+                .Where(f => AssetExtensions.Contains(Path.GetExtension(f)) && !f.Contains("Documentation~")).OrderBy(f => f, StringComparer.Ordinal).ToList();
+            foreach (var asset in assets)
+            {
+                var docs = Load(asset);
+                var local = new HashSet<long>(docs.Select(d => d.FileId));
+                foreach (var d in docs)
+                    foreach (var (key, reference) in References(d.Body, null))
+                        CheckReference(asset, d, key, reference, local, guids, Load, problems);
+            }
+
+            var map = LoadPhaseMap(package, problems);
+            foreach (var controller in assets.Where(a => a.EndsWith(".controller", StringComparison.Ordinal)))
+                CheckController(controller, Load(controller), guids, Load, problems);
+            foreach (var over in assets.Where(a => a.EndsWith(".overrideController", StringComparison.Ordinal)))
+                CheckOverrideController(over, Load(over), guids, Load, problems);
+            if (map != null)
+                foreach (var clip in assets.Where(a => a.EndsWith(".anim", StringComparison.Ordinal)))
+                    CheckClipContacts(clip, Load(clip), map, problems);
+            return problems;
+        }
+
+        static PhaseMap LoadPhaseMap(string package, List<string> problems)
+        {
+            string path = Path.Combine(package, GaitAssetFiles.CorTemplate);
+            if (!File.Exists(path))
+            {
+                problems.Add($"{path}: missing; the clips' contacts are checked against its phase map");
+                return null;
+            }
+            return CorrelationTemplate.Load(path).PhaseMap;
+        }
+
+        /// <summary>Every {fileID: ...} mapping in a node, with the key it hangs under.</summary>
+        static IEnumerable<(string Key, YamlMappingNode Reference)> References(YamlNode node, string key)
+        {
+            if (node is YamlMappingNode map)
+            {
+                if (map.Children.ContainsKey(new YamlScalarNode("fileID")))
+                {
+                    yield return (key, map);
+                    yield break;
+                }
+                foreach (var child in map.Children)
+                    foreach (var r in References(child.Value, ((YamlScalarNode)child.Key).Value))
+                        yield return r;
+            }
+            else if (node is YamlSequenceNode seq)
+            {
+                foreach (var item in seq.Children)
+                    foreach (var r in References(item, key))
+                        yield return r;
+            }
+        }
+
+        static string Get(YamlMappingNode map, string key) => map.Children.TryGetValue(new YamlScalarNode(key), out var n) && n is YamlScalarNode s ? s.Value : null;
+
+        static void CheckReference(string asset, UnityObject doc, string key, YamlMappingNode reference, HashSet<long> local,
+                                   Dictionary<string, string> guids, Func<string, List<UnityObject>> load, List<string> problems)
+        {
+            string where = $"{asset}: &{doc.FileId} {doc.Type}.{key}";
+            if (!long.TryParse(Get(reference, "fileID"), NumberStyles.Integer, CultureInfo.InvariantCulture, out long fileId))
+            {
+                problems.Add($"{where}: fileID is not a number");
+                return;
+            }
+            string guid = Get(reference, "guid");
+            if (guid == null)
+            {
+                if (fileId != 0 && !local.Contains(fileId)) problems.Add($"{where}: local fileID {fileId} resolves to nothing in the file");
+                return;
+            }
+            if (BuiltinGuids.Contains(guid)) return;
+            if (!guids.TryGetValue(guid, out var target))
+            {
+                problems.Add($"{where}: guid {guid} resolves to no .meta in the package or its samples");
+                return;
+            }
+            if (key == "m_Script")
+            {
+                string cls = Path.GetFileNameWithoutExtension(target);
+                if (!target.EndsWith(".cs", StringComparison.Ordinal) || !Regex.IsMatch(File.ReadAllText(target), @"\bclass\s+" + Regex.Escape(cls) + @"\b"))
+                    problems.Add($"{where}: script guid {guid} is {target}, not a .cs file declaring class {cls}");
+                else if (doc.Stripped == false && !ScriptFieldsExist(doc, File.ReadAllText(target), out string missing))
+                    problems.Add($"{where}: field '{missing}' is not declared in {Path.GetFileName(target)}");
+                return;
+            }
+            if (AssetExtensions.Contains(Path.GetExtension(target)))
+            {
+                var docs = load(target);
+                bool found = docs.Any(d => d.FileId == fileId) || (fileId == GaitAssetFiles.PrefabRootId && target.EndsWith(".prefab", StringComparison.Ordinal));
+                if (!found) problems.Add($"{where}: fileID {fileId} is not an object of {target}");
+            }
+        }
+
+        /// <summary>Every serialized field of a MonoBehaviour (those not starting with m_) is declared in its script.</summary>
+        static bool ScriptFieldsExist(UnityObject doc, string source, out string missing)
+        {
+            foreach (var child in doc.Body.Children)
+            {
+                string name = ((YamlScalarNode)child.Key).Value;
+                if (name.StartsWith("m_", StringComparison.Ordinal)) continue;
+                if (!Regex.IsMatch(source, @"\b" + Regex.Escape(name) + @"\s*(=|;)"))
+                {
+                    missing = name;
+                    return false;
+                }
+            }
+            missing = null;
+            return true;
+        }
+
+        static void CheckController(string file, List<UnityObject> docs, Dictionary<string, string> guids, Func<string, List<UnityObject>> load, List<string> problems)
+        {
+            var byId = docs.ToDictionary(d => d.FileId);
+            var controller = docs.FirstOrDefault(d => d.ClassId == 91);
+            if (controller == null)
+            {
+                problems.Add($"{file}: no AnimatorController (class 91)");
+                return;
+            }
+            // Parameters: exactly AnimatorParameters, ints where the core writes ints (m_Type 3) and floats elsewhere (1).
+            var parameters = new Dictionary<string, int>();
+            if (controller.Node("m_AnimatorParameters") is YamlSequenceNode ps)
+                foreach (YamlMappingNode p in ps.Children)
+                    parameters[Get(p, "m_Name")] = int.Parse(Get(p, "m_Type") ?? "0", CultureInfo.InvariantCulture);
+            foreach (var name in AnimatorParameters.All)
+            {
+                if (!parameters.TryGetValue(name, out int type)) problems.Add($"{file}: parameter {name} (AnimatorParameters) is missing");
+                else if (type != (AnimatorParameters.IsInteger(name) ? GaitControllerYaml.IntType : GaitControllerYaml.FloatType))
+                    problems.Add($"{file}: parameter {name} has m_Type {type}");
+            }
+            foreach (var name in parameters.Keys)
+                if (!AnimatorParameters.All.Contains(name)) problems.Add($"{file}: parameter {name} is not in AnimatorParameters");
+
+            // States: one per LocomotionState, named as its clip; moving ones play at the stride phase.
+            var states = docs.Where(d => d.ClassId == 1102).ToList();
+            var stateOf = new Dictionary<long, LocomotionState>();
+            foreach (var s in states)
+            {
+                string name = s.Scalar("m_Name");
+                var match = GaitClips.All.Where(l => GaitClips.Name(l) == name).ToList();
+                if (match.Count == 0)
+                {
+                    problems.Add($"{file}: state '{name}' is not a LocomotionState");
+                    continue;
+                }
+                var state = match[0];
+                stateOf[s.FileId] = state;
+                bool moving = state != LocomotionState.Standing;
+                if (moving && (s.Scalar("m_TimeParameterActive") != "1" || s.Scalar("m_TimeParameter") != AnimatorParameters.StridePhase))
+                    problems.Add($"{file}: state '{name}' does not take its normalized time from {AnimatorParameters.StridePhase}");
+                if (s.Node("m_Motion") is YamlMappingNode motion && Get(motion, "guid") is string g && guids.TryGetValue(g, out var clip) && clip.EndsWith(".anim", StringComparison.Ordinal))
+                {
+                    string clipName = load(clip).FirstOrDefault(d => d.ClassId == 74)?.Scalar("m_Name");
+                    if (clipName != name) problems.Add($"{file}: state '{name}' plays clip '{clipName}'");
+                }
+                else problems.Add($"{file}: state '{name}' has no clip");
+            }
+            foreach (var l in GaitClips.All)
+                if (!stateOf.ContainsValue(l)) problems.Add($"{file}: no state for {l} ('{GaitClips.Name(l)}')");
+
+            // Transitions: exactly LocomotionTransitions, each on GaitState == target.
+            var expected = new HashSet<string>(LocomotionTransitions.All.Select(t => $"{t.From}->{t.To}")) { $"Any->{LocomotionTransitions.FromAnyState}" };
+            var found = new HashSet<string>();
+            void Transitions(string from, YamlNode list)
+            {
+                if (!(list is YamlSequenceNode seq)) return;
+                foreach (YamlMappingNode r in seq.Children)
+                {
+                    long id = long.Parse(Get(r, "fileID"), CultureInfo.InvariantCulture);
+                    if (!byId.TryGetValue(id, out var t)) continue; // reported as an unresolved fileID
+                    var dst = t.Node("m_DstState") as YamlMappingNode;
+                    long dstId = dst == null ? 0 : long.Parse(Get(dst, "fileID"), CultureInfo.InvariantCulture);
+                    if (!stateOf.TryGetValue(dstId, out var to))
+                    {
+                        problems.Add($"{file}: transition &{id} from {from} leads to no state");
+                        continue;
+                    }
+                    string key = $"{from}->{to}";
+                    found.Add(key);
+                    var conditions = (t.Node("m_Conditions") as YamlSequenceNode)?.Children.Cast<YamlMappingNode>().ToList() ?? new List<YamlMappingNode>();
+                    bool right = conditions.Count == 1 && Get(conditions[0], "m_ConditionEvent") == AnimatorParameters.State
+                                 && Get(conditions[0], "m_ConditionMode") == GaitControllerYaml.ConditionEquals.ToString(CultureInfo.InvariantCulture)
+                                 && Get(conditions[0], "m_EventTreshold") == ((int)to).ToString(CultureInfo.InvariantCulture);
+                    if (!right) problems.Add($"{file}: transition {key} is not taken on {AnimatorParameters.State} == {(int)to}");
+                    if (t.Scalar("m_HasExitTime") != "0") problems.Add($"{file}: transition {key} waits for an exit time");
+                }
+            }
+            foreach (var s in states.Where(s => stateOf.ContainsKey(s.FileId))) Transitions(stateOf[s.FileId].ToString(), s.Node("m_Transitions"));
+            foreach (var m in docs.Where(d => d.ClassId == 1107)) Transitions("Any", m.Node("m_AnyStateTransitions"));
+            foreach (var e in expected.Except(found)) problems.Add($"{file}: transition {e} (LocomotionTransitions) is missing");
+            foreach (var e in found.Except(expected)) problems.Add($"{file}: transition {e} is not one the core's state machine makes");
+        }
+
+        /// <summary>An override controller replaces each clip of its controller with a clip of the same name.</summary>
+        static void CheckOverrideController(string file, List<UnityObject> docs, Dictionary<string, string> guids, Func<string, List<UnityObject>> load, List<string> problems)
+        {
+            var over = docs.FirstOrDefault(d => d.ClassId == 221);
+            if (over == null)
+            {
+                problems.Add($"{file}: no AnimatorOverrideController (class 221)");
+                return;
+            }
+            string ClipName(YamlNode reference)
+                => reference is YamlMappingNode r && Get(r, "guid") is string g && guids.TryGetValue(g, out var clip) && clip.EndsWith(".anim", StringComparison.Ordinal)
+                    ? load(clip).FirstOrDefault(d => d.ClassId == 74)?.Scalar("m_Name") : null;
+            var overridden = new HashSet<string>();
+            if (over.Node("m_Clips") is YamlSequenceNode pairs)
+                foreach (YamlMappingNode pair in pairs.Children)
+                {
+                    string original = ClipName(pair.Children[new YamlScalarNode("m_OriginalClip")]);
+                    string replacement = ClipName(pair.Children[new YamlScalarNode("m_OverrideClip")]);
+                    if (original == null || original != replacement) problems.Add($"{file}: clip '{original}' is overridden by '{replacement}'");
+                    else overridden.Add(original);
+                }
+            foreach (var l in GaitClips.All)
+                if (!overridden.Contains(GaitClips.Name(l))) problems.Add($"{file}: '{GaitClips.Name(l)}' is not overridden");
+        }
+
+        /// <summary>
+        /// Rebuilds the mannequin's pose at each key of a clip from its curves and checks each foot is down at its initial
+        /// contact and still in the air one key before, at the stride positions of the phase map.
+        /// </summary>
+        static void CheckClipContacts(string file, List<UnityObject> docs, PhaseMap map, List<string> problems)
+        {
+            var clip = docs.FirstOrDefault(d => d.ClassId == 74);
+            if (clip == null) return;
+            string name = clip.Scalar("m_Name");
+            var state = GaitClips.All.Where(l => GaitClips.Name(l) == name).Select(l => (LocomotionState?)l).FirstOrDefault();
+            if (state == null || state == LocomotionState.Standing) return;
+            var settings = clip.Node("m_AnimationClipSettings") as YamlMappingNode;
+            double length = double.Parse(Get(settings, "m_StopTime") ?? "0", CultureInfo.InvariantCulture);
+            var euler = Curves(clip.Node("m_EulerCurves"));
+            var position = Curves(clip.Node("m_PositionCurves"));
+            var muscles = FloatCurves(clip.Node("m_FloatCurves"));
+            bool humanoid = muscles.ContainsKey(HumanoidMuscles.UpperLegFrontBack(Foot.Left).Name);
+            double? Muscle(string attribute, double time)
+            {
+                if (!muscles.TryGetValue(attribute, out var keys)) return null;
+                foreach (var k in keys)
+                    if (Math.Abs(k.T - time) < 1e-6) return k.V;
+                // A constant is written with its two end keys only.
+                return keys.Count > 0 && keys.All(k => k.V == keys[0].V) ? keys[0].V : (double?)null;
+            }
+
+            double? Value(Dictionary<string, List<(double T, double[] V)>> curves, string path, int axis, double time)
+            {
+                if (!curves.TryGetValue(path, out var keys)) return null;
+                foreach (var k in keys)
+                    if (Math.Abs(k.T - time) < 1e-6) return k.V[axis];
+                return keys.Count > 0 && keys.All(k => k.V[axis] == keys[0].V[axis]) ? keys[0].V[axis] : (double?)null;
+            }
+            double? FootHeight(Foot foot, double stride)
+            {
+                double t = stride * length;
+                if (humanoid)
+                {
+                    // Muscles back to angles (HumanoidMuscles), the body's height and tilt from RootT.y and RootQ.x.
+                    var fb = Muscle(HumanoidMuscles.UpperLegFrontBack(foot).Name, t);
+                    var st = Muscle(HumanoidMuscles.LowerLegStretch(foot).Name, t);
+                    var ud = Muscle(HumanoidMuscles.FootUpDown(foot).Name, t);
+                    var y = Muscle("RootT.y", t);
+                    var qx = Muscle("RootQ.x", t);
+                    if (fb == null || st == null || ud == null || y == null || qx == null) return null;
+                    var angles = HumanoidMuscles.Leg(foot, fb.Value, st.Value, ud.Value);
+                    return y.Value * Mannequin.StandingHipHeight + Mannequin.Leg(angles, 2 * Math.Asin(qx.Value) * 180 / Math.PI).Lowest;
+                }
+                var hip = Value(position, Mannequin.Hips, 1, t);
+                var tilt = Value(euler, Mannequin.Hips, 0, t);
+                var h = Value(euler, Mannequin.UpperLeg(foot), 0, t);
+                var k = Value(euler, Mannequin.LowerLeg(foot), 0, t);
+                var a = Value(euler, Mannequin.FootPath(foot), 0, t);
+                if (hip == null || tilt == null || h == null || k == null || a == null) return null;
+                return hip.Value + Mannequin.Leg(new LegAngles(-h.Value, k.Value, -a.Value), tilt.Value).Lowest;
+            }
+
+            var feet = state == LocomotionState.Walking ? new[] { Foot.Left, Foot.Right }
+                : state == LocomotionState.StartWalkLeft ? new[] { Foot.Left }
+                : state == LocomotionState.StartWalkRight ? new[] { Foot.Right } : new Foot[0];
+            foreach (var foot in feet)
+            {
+                double ic = map.StridePositionOfOnset(foot, GaitPhase.InitialContact);
+                // A contact at stride 0 is the loop's wrap: down at the first key, in the air at the one before the last.
+                var down = FootHeight(foot, ic);
+                var before = FootHeight(foot, (ic == 0 ? 1 : ic) - GaitClipYaml.BeforeEvent);
+                if (down == null || before == null)
+                    problems.Add($"{file}: no key at the {foot} initial contact (stride {ic:F4} of the phase map, {ic * length:F4} s)");
+                else if (Math.Abs(down.Value) > Contact || before.Value <= Contact)
+                    problems.Add($"{file}: the {foot} foot does not land at stride {ic:F4} (height {before:F4} m before, {down:F4} m at it)");
+            }
+        }
+
+        static Dictionary<string, List<(double T, double[] V)>> Curves(YamlNode node)
+        {
+            var curves = new Dictionary<string, List<(double, double[])>>();
+            if (!(node is YamlSequenceNode seq)) return curves;
+            foreach (YamlMappingNode c in seq.Children)
+            {
+                string path = Get(c, "path") ?? "";
+                var keys = new List<(double, double[])>();
+                var curve = c.Children[new YamlScalarNode("curve")] as YamlMappingNode;
+                if (curve?.Children[new YamlScalarNode("m_Curve")] is YamlSequenceNode ks)
+                    foreach (YamlMappingNode k in ks.Children)
+                    {
+                        var v = (YamlMappingNode)k.Children[new YamlScalarNode("value")];
+                        keys.Add((double.Parse(Get(k, "time"), CultureInfo.InvariantCulture),
+                            new[] { Num(v, "x"), Num(v, "y"), Num(v, "z") }));
+                    }
+                curves[path] = keys;
+            }
+            return curves;
+        }
+
+        static Dictionary<string, List<(double T, double V)>> FloatCurves(YamlNode node)
+        {
+            var curves = new Dictionary<string, List<(double, double)>>();
+            if (!(node is YamlSequenceNode seq)) return curves;
+            foreach (YamlMappingNode c in seq.Children)
+            {
+                var keys = new List<(double, double)>();
+                var curve = c.Children[new YamlScalarNode("curve")] as YamlMappingNode;
+                if (curve?.Children[new YamlScalarNode("m_Curve")] is YamlSequenceNode ks)
+                    foreach (YamlMappingNode k in ks.Children)
+                        keys.Add((double.Parse(Get(k, "time"), CultureInfo.InvariantCulture), double.Parse(Get(k, "value"), CultureInfo.InvariantCulture)));
+                curves[Get(c, "attribute") ?? ""] = keys;
+            }
+            return curves;
+        }
+
+        static double Num(YamlMappingNode m, string key) => double.Parse(Get(m, key), CultureInfo.InvariantCulture);
+    }
+}

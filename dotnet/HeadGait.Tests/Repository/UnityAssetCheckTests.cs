@@ -1,0 +1,133 @@
+using System;
+using System.IO;
+using System.Linq;
+using HeadGait.Tooling;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>The package's Unity assets (controller, clips, prefabs, sample scene) checked without Unity.</summary>
+    public class UnityAssetCheckTests
+    {
+        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+
+        [Test]
+        public void ThePackagesAssetsResolveAndAgreeWithTheCore()
+        {
+            var problems = UnityAssetCheck.Problems(Package);
+            Assert.That(problems, Is.Empty, "regenerate with `dotnet run --project dotnet/HeadGait.Cli -c Release -- clips`");
+        }
+
+        [Test]
+        public void TheCommittedAssetsAreWhatTheGeneratorWrites()
+        {
+            // The clips and controller are generated from the core; edits by hand or a changed phase map must be regenerated.
+            string copy = CopyOfPackage();
+            try
+            {
+                GaitAssetFiles.WriteAll(copy, CorrelationTemplate.Load(Path.Combine(copy, GaitAssetFiles.CorTemplate)).PhaseMap);
+                foreach (var relative in new[] { GaitAssetFiles.Controller, GaitAssetFiles.ClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidController, GaitAssetFiles.LegsPrefab, GaitAssetFiles.MannequinPrefab, GaitAssetFiles.SampleScene })
+                    Assert.That(File.ReadAllText(Path.Combine(copy, relative)), Is.EqualTo(File.ReadAllText(Path.Combine(Package, relative))), relative + " is out of date");
+            }
+            finally
+            {
+                Directory.Delete(copy, true);
+            }
+        }
+
+        [Test]
+        public void TheCheckFailsOnABrokenCopy()
+        {
+            string copy = CopyOfPackage();
+            try
+            {
+                Assert.That(UnityAssetCheck.Problems(copy), Is.Empty, "the unbroken copy passes");
+                string controller = Path.Combine(copy, GaitAssetFiles.Controller);
+                string legs = Path.Combine(copy, GaitAssetFiles.LegsPrefab);
+                string scene = Path.Combine(copy, GaitAssetFiles.SampleScene);
+                string walking = Path.Combine(copy, GaitAssetFiles.ClipPath(LocomotionState.Walking));
+                string legAnimatorGuid = GaitAssetFiles.GuidOf(copy, GaitAssetFiles.GaitLegAnimatorScript);
+                string imuGuid = GaitAssetFiles.GuidOf(copy, GaitAssetFiles.HeadImuSourceScript);
+                string corGuid = GaitAssetFiles.GuidOf(copy, GaitAssetFiles.CorTemplate);
+
+                // A parameter renamed, a transition's target state gone, a script pointing at the wrong class, a GUID to
+                // nothing, and a walking clip timed with Perry's map instead of the trained one.
+                Edit(controller, t => t.Replace("m_TimeParameter: " + AnimatorParameters.StridePhase, "m_TimeParameter: Stride").Replace("- m_Name: " + AnimatorParameters.StridePhase, "- m_Name: Stride"));
+                long walkingState = GaitControllerYaml.StateId(LocomotionState.Walking);
+                Edit(controller, t => t.Replace($"--- !u!1102 &{walkingState}\n", "--- !u!1102 &12345\n"));
+                Edit(legs, t => ReplaceFirst(t, "guid: " + legAnimatorGuid, "guid: " + imuGuid));
+                Edit(legs, t => t.Replace(corGuid, "0123456789abcdef0123456789abcdef"));
+                Edit(scene, t => t.Replace("m_PrefabInstance: {fileID: " + SampleSceneYaml.PrefabInstanceId + "}", "m_PrefabInstance: {fileID: 42}"));
+                File.WriteAllText(walking, GaitClipYaml.Write(new GaitClips(PhaseMap.Perry), LocomotionState.Walking));
+                File.WriteAllText(Path.Combine(copy, GaitAssetFiles.HumanoidClipPath(LocomotionState.StartWalkRight)), HumanoidClipYaml.Write(new GaitClips(PhaseMap.Perry), LocomotionState.StartWalkRight));
+                Edit(Path.Combine(copy, GaitAssetFiles.HumanoidClipPath(LocomotionState.Standing)), t => t.Replace("m_Name: Standing", "m_Name: Idle"));
+                string misnamed = Path.Combine(copy, "Runtime", "Components", "Misnamed.cs");
+                File.WriteAllText(misnamed, "class SomethingElse {}");
+                File.WriteAllText(misnamed + ".meta", UnityMeta.Text(misnamed, "abcdefabcdefabcdefabcdefabcdefab"));
+                string playerGuid = GaitAssetFiles.GuidOf(copy, GaitAssetFiles.RecordingPlayerScript);
+                Edit(scene, t => t.Replace("guid: " + playerGuid, "guid: abcdefabcdefabcdefabcdefabcdefab"));
+
+                var problems = string.Join("\n", UnityAssetCheck.Problems(copy));
+                Assert.That(problems, Does.Contain("parameter StridePhase (AnimatorParameters) is missing"));
+                Assert.That(problems, Does.Contain("parameter Stride is not in AnimatorParameters"));
+                Assert.That(problems, Does.Contain("does not take its normalized time from StridePhase"));
+                Assert.That(problems, Does.Contain($"local fileID {walkingState} resolves to nothing"));
+                Assert.That(problems, Does.Contain("transition StartWalkLeft->Walking (LocomotionTransitions) is missing"));
+                Assert.That(problems, Does.Contain("field 'animator' is not declared in HeadImuSource.cs"));
+                Assert.That(problems, Does.Contain("not a .cs file declaring class Misnamed"));
+                Assert.That(problems, Does.Contain("guid 0123456789abcdef0123456789abcdef resolves to no .meta"));
+                Assert.That(problems, Does.Contain("local fileID 42 resolves to nothing"));
+                Assert.That(problems, Does.Contain("Walking.anim: no key at the Right initial contact").Or.Contain("Walking.anim: the Right foot does not land"));
+                Assert.That(problems, Does.Contain("Humanoid/Start Walk Right.anim: no key at the Right initial contact").Or.Contain("Humanoid/Start Walk Right.anim: the Right foot does not land"));
+                Assert.That(problems, Does.Contain("clip 'Standing' is overridden by 'Idle'"));
+            }
+            finally
+            {
+                Directory.Delete(copy, true);
+            }
+        }
+
+        [Test]
+        public void StrippedDocumentsAndTagsAreSplitBeforeParsing()
+        {
+            const string text = "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!1001 &5\nPrefabInstance:\n  m_SourcePrefab: {fileID: 100100000, guid: abc, type: 3}\n" +
+                                "--- !u!114 &-7 stripped\nMonoBehaviour:\n  m_PrefabInstance: {fileID: 5}\n";
+            var docs = UnityYamlFile.Parse(text, "test.unity");
+            Assert.That(docs.Select(d => (d.ClassId, d.FileId, d.Stripped, d.Type)), Is.EqualTo(new[] { (1001, 5L, false, "PrefabInstance"), (114, -7L, true, "MonoBehaviour") }));
+            Assert.That(() => UnityYamlFile.Parse("--- !u!1 &1\nGameObject:\n  m_Name: [unclosed\n", "bad.prefab"), Throws.TypeOf<FormatException>().With.Message.Contains("bad.prefab"));
+        }
+
+        static void Edit(string path, Func<string, string> change)
+        {
+            string before = File.ReadAllText(path);
+            string after = change(before);
+            Assert.That(after, Is.Not.EqualTo(before), "the edit to " + Path.GetFileName(path) + " changed nothing");
+            File.WriteAllText(path, after);
+        }
+
+        static string ReplaceFirst(string text, string what, string with)
+        {
+            int i = text.IndexOf(what, StringComparison.Ordinal);
+            return i < 0 ? text : text.Substring(0, i) + with + text.Substring(i + what.Length);
+        }
+
+        /// <summary>The parts of the package the assets refer to (scripts, template, recordings, assets), in a temp folder.</summary>
+        static string CopyOfPackage()
+        {
+            string copy = Path.Combine(Path.GetTempPath(), "headgait-assets-" + Guid.NewGuid().ToString("N"));
+            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Animation/Humanoid", "Runtime/Prefabs", "Runtime/Components", "Samples~/Legs", "Samples~/Recordings/eval" })
+            {
+                foreach (var file in Directory.GetFiles(Path.Combine(Package, folder)))
+                {
+                    string target = Path.Combine(copy, folder, Path.GetFileName(file));
+                    Directory.CreateDirectory(Path.GetDirectoryName(target));
+                    File.Copy(file, target);
+                }
+            }
+            Directory.CreateDirectory(Path.Combine(copy, "Models"));
+            foreach (var f in new[] { GaitAssetFiles.CorTemplate, GaitAssetFiles.CorTemplate + ".meta" })
+                File.Copy(Path.Combine(Package, f), Path.Combine(copy, f));
+            return copy;
+        }
+    }
+}

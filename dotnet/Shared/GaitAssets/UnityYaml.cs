@@ -1,0 +1,53 @@
+using System;
+using System.Globalization;
+using System.Text;
+
+namespace HeadGait.Tooling
+{
+    /// <summary>
+    /// Pieces of Unity's text serialization (force-text YAML). Each object is a document headed `--- !u!CLASS &amp;FILEID`;
+    /// class IDs from https://docs.unity3d.com/Manual/ClassIDReference.html (1 GameObject, 4 Transform, 23 MeshRenderer,
+    /// 33 MeshFilter, 74 AnimationClip, 91 AnimatorController, 95 Animator, 114 MonoBehaviour, 1001 PrefabInstance,
+    /// 1101 AnimatorStateTransition, 1102 AnimatorState, 1107 AnimatorStateMachine). References are {fileID, guid, type}:
+    /// type 2 an asset in a native file, type 3 an object in an imported file (script, text, prefab).
+    /// </summary>
+    public static class UnityYaml
+    {
+        public const string Header = "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n";
+
+        /// <summary>Unity's built-in resources: primitive meshes (Cube 10202, Cylinder 10206, Sphere 10207, Capsule 10208).</summary>
+        public const string BuiltinExtraGuid = "0000000000000000e000000000000000";
+        /// <summary>Unity's built-in extra resources: Default-Material (10303).</summary>
+        public const string BuiltinMaterialGuid = "0000000000000000f000000000000000";
+
+        public static string Document(int classId, long fileId, string type, bool stripped = false)
+            => $"--- !u!{classId} &{fileId}{(stripped ? " stripped" : "")}\n{type}:\n";
+
+        public static string Ref(long fileId) => $"{{fileID: {fileId}}}";
+
+        public static string Ref(long fileId, string guid, int type) => $"{{fileID: {fileId}, guid: {guid}, type: {type}}}";
+
+        public static string Number(double x)
+        {
+            if (Math.Abs(x) < 1e-9) return "0";
+            return x.ToString("0.#######", CultureInfo.InvariantCulture);
+        }
+
+        public static string Vector(double x, double y, double z) => $"{{x: {Number(x)}, y: {Number(y)}, z: {Number(z)}}}";
+
+        /// <summary>
+        /// A stable local fileID for an object named by a key (a path in the hierarchy and a component), so regenerating a
+        /// prefab keeps the IDs that scenes and prefab instances refer to. FNV-1a, kept positive and away from small IDs.
+        /// </summary>
+        public static long StableFileId(string key)
+        {
+            ulong h = 14695981039346656037UL;
+            foreach (byte b in Encoding.UTF8.GetBytes(key))
+            {
+                h ^= b;
+                h *= 1099511628211UL;
+            }
+            return (long)(h % 9000000000000000000UL) + 100000000000L;
+        }
+    }
+}
