@@ -51,7 +51,8 @@ namespace HeadGait.Unity
         [SerializeField] int consecutiveErrorsToSwitch = 3;
 
         GaitBatchRunner runner;
-        GaitJobScheduler scheduler;
+        GaitJobScheduler jobScheduler;
+        IGaitBatchScheduler scheduler; // the job, or inline for an evaluator that must run on the main thread
         AnimatorParameterWriter writer;
         AnimatorSink sink;
         LocomotionState lastState;
@@ -59,6 +60,9 @@ namespace HeadGait.Unity
 
         /// <summary>Raised on the frame the locomotion state changes (old, new).</summary>
         public event Action<LocomotionState, LocomotionState> StateChanged;
+
+        /// <summary>Raised after <see cref="Build"/> made a new classifier (an evaluator set before is gone with the old one).</summary>
+        public event Action Rebuilt;
 
         /// <summary>The runner that owns the pipeline (samples in, frames out); created on first use.</summary>
         public GaitBatchRunner Runner
@@ -111,8 +115,25 @@ namespace HeadGait.Unity
                 ConsecutiveErrorsToSwitch = Mathf.Max(1, consecutiveErrorsToSwitch),
             };
             runner = new GaitBatchRunner(new GaitPipeline(c, null, settings)) { SourceLag = sourceLag };
-            scheduler = new GaitJobScheduler(runner);
+            jobScheduler = new GaitJobScheduler(runner);
+            scheduler = jobScheduler;
             lastState = LocomotionState.Standing;
+            Rebuilt?.Invoke();
+        }
+
+        /// <summary>
+        /// Scores the SVM's or BLSTM's windows with <paramref name="evaluator"/> (the Sentis component sets one; null: the C#
+        /// network again). With <paramref name="mainThreadOnly"/> the batches run inline in Update instead of on a job, as
+        /// Sentis needs (it schedules its own jobs and GPU work, which Unity allows only from the main thread). Returns false,
+        /// changing nothing, when the classifier is COR or THR. <see cref="Build"/> goes back to the C# network.
+        /// </summary>
+        public bool SetLearnedEvaluator(ILearnedEvaluator evaluator, bool mainThreadOnly)
+        {
+            if (!(Runner.Pipeline.Classifier is LearnedClassifier learned)) return false;
+            runner.Complete(scheduler); // never swap the evaluator under a running batch
+            learned.Evaluator = evaluator;
+            scheduler = evaluator != null && mainThreadOnly ? new InlineBatchScheduler(runner) : (IGaitBatchScheduler)jobScheduler;
+            return true;
         }
 
         /// <summary>Reads the controller's parameters again (after swapping the Animator Controller at run time).</summary>
@@ -162,8 +183,9 @@ namespace HeadGait.Unity
         {
             if (runner == null) return;
             runner.Complete(scheduler);
-            scheduler.Dispose();
+            jobScheduler.Dispose();
             runner = null;
+            jobScheduler = null;
             scheduler = null;
         }
 

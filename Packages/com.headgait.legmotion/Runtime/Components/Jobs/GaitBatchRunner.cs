@@ -10,7 +10,8 @@ namespace HeadGait.Unity
     /// once it has grown to the largest batch seen); <see cref="Step"/>, once per frame, completes the batch scheduled last
     /// frame, publishes its latest animator frame (<see cref="Latest"/>) and schedules the samples handed over since.</item>
     /// <item>Worker: <see cref="ExecuteBatch"/> feeds the batch to the pipeline, which resamples to its 100 Hz grid and
-    /// classifies every grid step, so classification follows sensor time, not the frame rate.</item>
+    /// classifies every grid step, so classification follows sensor time, not the frame rate (a learned classifier scores
+    /// the batch's windows together: <see cref="GaitPipeline.PushBatch"/>).</item>
     /// </list>
     /// A frame never waits for samples: a frame without new samples schedules nothing and shows the last published frame.
     /// The published frame is one frame behind the samples (the batch handed over this frame is read next frame).
@@ -148,7 +149,7 @@ namespace HeadGait.Unity
         public void ExecuteBatch()
         {
             long before = pipeline.Windows;
-            for (int i = 0; i < batchCount; i++) pipeline.Push(batch[i]);
+            pipeline.PushBatch(batch, batchCount); // a learned classifier scores the batch's windows in one evaluator call
             batchLatest = pipeline.Latest;
             batchPrediction = pipeline.LatestPrediction;
             batchWindows = pipeline.Windows - before;

@@ -14,6 +14,8 @@ namespace HeadGait
         readonly GaitAnimatorStateMachine animator;
         readonly Action<SignalWindow> onWindow;
         readonly Stopwatch stopwatch = new Stopwatch();
+        readonly LearnedWindowBatch batch; // null unless the classifier is a learned one
+        bool batching;                      // inside PushBatch: windows and restarts are queued, not run
 
         public GaitPipeline(IGaitClassifier classifier, PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null)
         {
@@ -28,6 +30,7 @@ namespace HeadGait
             preprocessor = new StreamPreprocessor(settings);
             animator = new GaitAnimatorStateMachine(classifier.PhaseMap, animatorSettings);
             onWindow = OnWindow;
+            if (classifier is LearnedClassifier learned) batch = new LearnedWindowBatch(learned);
             Latest = new AnimatorFrame(0, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
         }
 
@@ -56,23 +59,83 @@ namespace HeadGait
             var outcome = preprocessor.Push(sample, onWindow);
             if (outcome == SampleOutcome.AcceptedAfterGap || outcome == SampleOutcome.AcceptedAfterRebase)
             {
-                // The signal broke off or its clock moved: forget the stale history and let the avatar stand rather than
-                // freeze mid-stride until the next full window.
-                classifier.Reset();
-                animator.Reset();
-                LatestPrediction = GaitPrediction.Standing(sample.Time);
-                Latest = new AnimatorFrame(sample.Time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+                if (batching) batch.AddRestart(sample.Time);
+                else Restart(sample.Time);
             }
             return outcome;
         }
 
         public SampleOutcome Push(double time, double x, double y, double z) => Push(new ImuSample(time, x, y, z));
 
+        /// <summary>
+        /// Pushes <paramref name="count"/> samples in order, with the same predictions, frames and events as pushing them
+        /// one by one. With a learned classifier the windows they complete are scored together, in one call of its
+        /// evaluator (one inference when that is Sentis), and then decided in order; other classifiers run window by window.
+        /// </summary>
+        public void PushBatch(ImuSample[] samples, int count)
+        {
+            if (samples == null) throw new ArgumentNullException(nameof(samples));
+            if (count < 0 || count > samples.Length) throw new ArgumentOutOfRangeException(nameof(count));
+            if (batch == null)
+            {
+                for (int i = 0; i < count; i++) Push(samples[i]);
+                return;
+            }
+            batch.Clear();
+            batching = true;
+            try
+            {
+                for (int i = 0; i < count; i++) Push(samples[i]);
+            }
+            finally
+            {
+                batching = false;
+            }
+            stopwatch.Start();
+            batch.Evaluate();
+            stopwatch.Stop();
+            for (int i = 0; i < batch.Count; i++)
+            {
+                if (batch.IsRestart(i, out double time))
+                {
+                    Restart(time);
+                    continue;
+                }
+                stopwatch.Start();
+                var prediction = batch.Classify(i);
+                stopwatch.Stop();
+                Publish(prediction);
+            }
+            batch.Clear();
+        }
+
+        /// <summary>
+        /// The signal broke off or its clock moved: forget the stale history and let the avatar stand rather than freeze
+        /// mid-stride until the next full window.
+        /// </summary>
+        void Restart(double time)
+        {
+            classifier.Reset();
+            animator.Reset();
+            LatestPrediction = GaitPrediction.Standing(time);
+            Latest = new AnimatorFrame(time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+        }
+
         void OnWindow(SignalWindow window)
         {
+            if (batching)
+            {
+                batch.AddWindow(window);
+                return;
+            }
             stopwatch.Start();
             var prediction = classifier.Classify(window);
             stopwatch.Stop();
+            Publish(prediction);
+        }
+
+        void Publish(GaitPrediction prediction)
+        {
             if (SourceLag != 0) prediction = prediction.Advanced(SourceLag, classifier.PhaseMap);
             LatestPrediction = prediction;
             Latest = animator.Update(prediction);

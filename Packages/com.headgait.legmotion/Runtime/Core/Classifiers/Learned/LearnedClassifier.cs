@@ -5,7 +5,8 @@ namespace HeadGait
 {
     /// <summary>
     /// Shared part of the learned classifiers (SVM, BLSTM): reads the features a model file names, standardises them,
-    /// lets the model score each class (a stride segment naming both feet's phases, or Standing), turns the scores into
+    /// lets the model score each class (a stride segment naming both feet's phases, or Standing) through its
+    /// <see cref="Evaluator"/> (the C# network, or the ONNX export in Sentis; windows may be scored in batches), turns the scores into
     /// probabilities, filters them over time with the gait's order (<see cref="PhaseSequenceFilter"/>, unless turned off)
     /// and reports the most likely class. Its stride position is the segment's, nudged towards the likelier neighbour;
     /// its step period comes from the time between predicted foot contacts.
@@ -18,6 +19,8 @@ namespace HeadGait
         readonly double[] scores;
         readonly double[] probabilities;
         readonly PhaseSequenceFilter filter;
+        readonly CSharpNetwork network;
+        ILearnedEvaluator evaluator;
         int lastClass = -1;
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
@@ -51,6 +54,8 @@ namespace HeadGait
             probabilities = new double[Segments.ClassCount];
             filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
             stepPeriod = DefaultStepPeriod;
+            network = new CSharpNetwork(this);
+            evaluator = network;
         }
 
         /// <summary>Step period assumed until two predicted contacts have been seen (s).</summary>
@@ -65,6 +70,16 @@ namespace HeadGait
 
         /// <summary>Class scores of the last window (model-specific: probabilities for the BLSTM, votes for the SVM).</summary>
         public double[] LastScores => scores;
+
+        /// <summary>The model in plain C# (allocation-free): the evaluator unless another is set.</summary>
+        public ILearnedEvaluator Network => network;
+
+        /// <summary>What scores the windows: <see cref="Network"/>, or another runtime of the same model (Sentis); null sets the network.</summary>
+        public ILearnedEvaluator Evaluator
+        {
+            get => evaluator;
+            set => evaluator = value ?? network;
+        }
 
         /// <summary>Scores every class from standardised features ([time][channel]); higher is more likely.</summary>
         protected abstract void Score(double[] standardised, double[] classScores);
@@ -103,10 +118,26 @@ namespace HeadGait
 
         public GaitPrediction Classify(SignalWindow window)
         {
-            Score(Standardise(window), scores);
+            evaluator.Evaluate(Standardise(window), 1, scores);
+            return Decide(window.EndTime, window.SampleRate);
+        }
+
+        /// <summary>
+        /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
+        /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
+        /// their order; the time filter and step period carry over from one to the next.
+        /// </summary>
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate)
+        {
+            Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
+            return Decide(endTime, sampleRate);
+        }
+
+        /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
+        GaitPrediction Decide(double now, double sampleRate)
+        {
             ToProbabilities(scores, probabilities);
-            double now = window.EndTime;
-            double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / window.SampleRate : Math.Min(0.25, now - lastTime);
+            double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
             lastTime = now;
             var p = probabilities;
             int best;
@@ -158,6 +189,33 @@ namespace HeadGait
                 if (interval > 0.25 && interval < 1.2) stepPeriod = 0.7 * stepPeriod + 0.3 * interval;
             }
             lastContactTime = now;
+        }
+
+        /// <summary>The C# model as an evaluator: each window in turn through <see cref="Score"/>.</summary>
+        sealed class CSharpNetwork : ILearnedEvaluator
+        {
+            readonly LearnedClassifier owner;
+            readonly double[] row, rowScores;
+
+            public CSharpNetwork(LearnedClassifier owner)
+            {
+                this.owner = owner;
+                row = new double[owner.Features.Width];
+                rowScores = new double[owner.Segments.ClassCount];
+            }
+
+            public void Evaluate(double[] features, int windows, double[] scores)
+            {
+                int w = row.Length, k = rowScores.Length;
+                if (windows < 0 || features.Length < windows * w || scores.Length < windows * k)
+                    throw new ArgumentException($"{windows} windows need {windows * w} features and {windows * k} scores, got {features.Length} and {scores.Length}.");
+                for (int n = 0; n < windows; n++)
+                {
+                    Array.Copy(features, n * w, row, 0, w);
+                    owner.Score(row, rowScores);
+                    Array.Copy(rowScores, 0, scores, n * k, k);
+                }
+            }
         }
 
         protected static string Describe(double v) => v.ToString("G4", CultureInfo.InvariantCulture);
