@@ -1,6 +1,5 @@
 using System;
 using System.CommandLine;
-using System.Diagnostics;
 using System.IO;
 using HeadGait.Tooling;
 
@@ -32,20 +31,7 @@ namespace HeadGait.Cli
         {
             string folder = Path.Combine(package, "Documentation~", "images");
             Directory.CreateDirectory(folder);
-            string svgPath = Path.Combine(folder, "gait-clips.svg"), pngPath = Path.Combine(folder, "gait-clips.png");
-            File.WriteAllText(svgPath, GaitStickFigureSvg.Write(clips, GaitStickFigureSvg.DefaultRows(clips)));
-            try
-            {
-                var p = Process.Start(new ProcessStartInfo("rsvg-convert", $"-o \"{pngPath}\" \"{svgPath}\"") { UseShellExecute = false, RedirectStandardError = true });
-                string err = p.StandardError.ReadToEnd();
-                p.WaitForExit();
-                if (p.ExitCode != 0) throw new InvalidOperationException($"rsvg-convert failed: {err}");
-                Console.WriteLine($"wrote {pngPath} (and {svgPath})");
-            }
-            catch (System.ComponentModel.Win32Exception)
-            {
-                Console.WriteLine($"wrote {svgPath}; for a PNG install rsvg-convert (apt-get install librsvg2-bin)");
-            }
+            SvgPicture.Write(GaitStickFigureSvg.Write(clips, GaitStickFigureSvg.DefaultRows(clips)), Path.Combine(folder, "gait-clips.png"));
         }
     }
 }

@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.CommandLine;
-using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
@@ -226,20 +225,7 @@ namespace HeadGait.Cli
                 svg.Append(string.Format(Ci, "<rect x='{0}' y='{1}' width='12' height='12' fill='{2}'/><text x='{3}' y='{4}'>{5} (n={6})</text>",
                     left + gi * 170, height - 30, colours[gi % colours.Length], left + gi * 170 + 16, height - 20, groups[gi].name, groups[gi].values.Count));
             svg.Append("</svg>");
-            string svgPath = Path.ChangeExtension(pngPath, ".svg");
-            File.WriteAllText(svgPath, svg.ToString());
-            try
-            {
-                var p = Process.Start(new ProcessStartInfo("rsvg-convert", $"-o \"{pngPath}\" \"{svgPath}\"") { UseShellExecute = false, RedirectStandardError = true });
-                string err = p.StandardError.ReadToEnd();
-                p.WaitForExit();
-                if (p.ExitCode != 0) throw new InvalidOperationException($"rsvg-convert failed: {err}");
-                Console.WriteLine($"wrote {pngPath} (and {svgPath})");
-            }
-            catch (System.ComponentModel.Win32Exception)
-            {
-                Console.WriteLine($"wrote {svgPath}; for a PNG install rsvg-convert (apt-get install librsvg2-bin)");
-            }
+            SvgPicture.Write(svg.ToString(), pngPath);
         }
     }
 }
