@@ -18,8 +18,8 @@ namespace HeadGait.Tooling
     /// </summary>
     public static class StudyScene
     {
-        /// <summary>GUID of Packages/com.headgait.legmotion/Runtime/Prefabs/HeadGait Legs.prefab (made by the animator work).</summary>
-        public const string HumanoidPrefabGuid = "6701221dbb664f63a3a3c62cc8e95a65";
+        /// <summary>The humanoid condition is the drop-in prefab, Runtime/Prefabs/HeadGait Legs.prefab.</summary>
+        public const string HumanoidPrefabGuid = GaitAssetFiles.LegsPrefabGuid;
 
         public const double PathHalfLength = 8, PitStart = 3, PitEnd = 5, PitDepth = 6;
         const int Cube = 10202, Cylinder = 10206;
@@ -27,7 +27,7 @@ namespace HeadGait.Tooling
         /// <summary>The script GUIDs the scene refers to, read from the scripts' .meta files.</summary>
         public sealed class Scripts
         {
-            public string Runner, OperatorView, Switcher, SsqPanel;
+            public string Runner, OperatorView, Switcher, SsqPanel, FollowHead;
         }
 
         public static string PathIn(string package) => System.IO.Path.Combine(package, "Samples~", "Study", "Study.unity");
@@ -43,6 +43,7 @@ namespace HeadGait.Tooling
                 OperatorView = Guid("Runtime", "Components", "Study", "StudyOperatorView.cs"),
                 Switcher = Guid("Runtime", "Components", "Study", "AvatarConditionSwitcher.cs"),
                 SsqPanel = Guid("Samples~", "Study", "SsqPanel.cs"),
+                FollowHead = Guid("Runtime", "Components", "FollowHead.cs"),
             };
         }
 
@@ -82,8 +83,13 @@ namespace HeadGait.Tooling
             w.Box("Right Leg", block, P(0.1, 0.4, 0), S(0.14, 0.8, 0.14));
             w.Box("Left Foot", block, P(-0.1, 0.04, 0.06), S(0.12, 0.08, 0.26));
             w.Box("Right Foot", block, P(0.1, 0.04, 0.06), S(0.12, 0.08, 0.26));
+            // The blocks are not animated, but they walk with the participant like the humanoid does.
+            w.Mono(block, w.Id(), scripts.FollowHead, FollowHeadFields(camera.Transform));
             var humanoid = w.Object("Humanoid Avatar", avatars, P(0, 0, -0.5), active: false);
-            w.PrefabInstance(humanoid, HumanoidPrefabGuid);
+            // The prefab's own FollowHead (on its root) follows this scene's camera too.
+            long followInPrefab = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "FollowHead");
+            w.PrefabInstance(humanoid, HumanoidPrefabGuid, UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "Transform"),
+                (followInPrefab, "head", $"{{fileID: {camera.Transform}}}"));
 
             var study = w.Object("Study", null, P(0, 0, 0));
             long runner = w.Id(), view = w.Id(), switcher = w.Id();
@@ -101,6 +107,10 @@ namespace HeadGait.Tooling
             w.Mono(panel, w.Id(), scripts.SsqPanel, $"  runner: {{fileID: {runner}}}\n  size: {{x: 900, y: 520}}\n");
             return w.ToString();
         }
+
+        /// <summary>FollowHead's fields (as in the drop-in prefab, <see cref="GaitAssetFiles.AddFollowHead"/>) following a given head.</summary>
+        static string FollowHeadFields(long head)
+            => $"  head: {{fileID: {head}}}\n  floor: {{fileID: 0}}\n  floorHeight: 0\n  positionSmoothing: 0\n  headingSmoothing: 0.1\n";
 
         static void Marker(Writer w, Node parent, string name, double x, double z)
         {
@@ -196,13 +206,30 @@ namespace HeadGait.Tooling
                              $"  m_Script: {{fileID: 11500000, guid: {scriptGuid}, type: 3}}\n  m_Name: \n  m_EditorClassIdentifier: \n{fields}");
             }
 
-            /// <summary>An instance of a prefab (fileID 100100000 is a prefab asset's own record) under a scene object, with no overrides.</summary>
-            public void PrefabInstance(Node parent, string prefabGuid)
+            /// <summary>
+            /// An instance of a prefab (fileID 100100000 is a prefab asset's own record) under a scene object, at the parent's
+            /// origin, with object-reference overrides (target fileID in the prefab, property, reference). Its root Transform
+            /// appears in the scene as a `stripped` Transform (only its links to the source object and the instance), which
+            /// the parent lists among its children as Unity does.
+            /// </summary>
+            public void PrefabInstance(Node parent, string prefabGuid, long rootTransformInPrefab, params (long target, string property, string reference)[] references)
             {
-                long id = Id();
-                tail.Append($"--- !u!1001 &{id}\nPrefabInstance:\n  m_ObjectHideFlags: 0\n  serializedVersion: 2\n  m_Modification:\n" +
-                            $"    m_TransformParent: {{fileID: {parent.Transform}}}\n    m_Modifications: []\n    m_RemovedComponents: []\n" +
-                            $"  m_SourcePrefab: {{fileID: 100100000, guid: {prefabGuid}, type: 3}}\n");
+                long id = Id(), stripped = Id();
+                parent.Children.Add(stripped);
+                var sb = new StringBuilder();
+                sb.Append($"--- !u!1001 &{id}\nPrefabInstance:\n  m_ObjectHideFlags: 0\n  serializedVersion: 2\n  m_Modification:\n    serializedVersion: 3\n" +
+                          $"    m_TransformParent: {{fileID: {parent.Transform}}}\n    m_Modifications:\n");
+                void Modify(long target, string property, string value, string reference)
+                    => sb.Append($"    - target: {{fileID: {target}, guid: {prefabGuid}, type: 3}}\n      propertyPath: {property}\n" +
+                                 $"      value: {value}\n      objectReference: {reference}\n");
+                foreach (var axis in new[] { "x", "y", "z" }) Modify(rootTransformInPrefab, "m_LocalPosition." + axis, "0", "{fileID: 0}");
+                Modify(rootTransformInPrefab, "m_RootOrder", (parent.Children.Count - 1).ToString(CultureInfo.InvariantCulture), "{fileID: 0}");
+                foreach (var (target, property, reference) in references) Modify(target, property, "", reference);
+                sb.Append("    m_RemovedComponents: []\n    m_RemovedGameObjects: []\n    m_AddedGameObjects: []\n    m_AddedComponents: []\n");
+                sb.Append($"  m_SourcePrefab: {{fileID: 100100000, guid: {prefabGuid}, type: 3}}\n");
+                sb.Append($"--- !u!4 &{stripped} stripped\nTransform:\n  m_CorrespondingSourceObject: {{fileID: {rootTransformInPrefab}, guid: {prefabGuid}, type: 3}}\n" +
+                          $"  m_PrefabInstance: {{fileID: {id}}}\n  m_PrefabAsset: {{fileID: 0}}\n");
+                tail.Append(sb);
             }
 
             static string F(double v) => v.ToString("0.###", CultureInfo.InvariantCulture);

@@ -16,6 +16,11 @@ namespace UnityEngine
     // Runtime/Export/Scripting/Component.bindings.cs
     public class Component : Object
     {
+        // The GameObject that AddComponent put this on (GameObject.cs in the stand-ins); Unity keeps this link natively.
+        internal GameObject owner;
+
+        public Transform transform => this is Transform t ? t : owner?.transform;
+        public GameObject gameObject => owner;
         public T GetComponent<T>() => default;
         public T GetComponentInChildren<T>() => default;
     }
@@ -100,6 +105,7 @@ namespace UnityEngine
         public float x, y, z;
         public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
         public static Vector3 zero => new Vector3(0, 0, 0);
+        public static Vector3 forward => new Vector3(0, 0, 1);
         public static Vector3 operator +(Vector3 a, Vector3 b) => new Vector3(a.x + b.x, a.y + b.y, a.z + b.z);
         public static Vector3 operator -(Vector3 a, Vector3 b) => new Vector3(a.x - b.x, a.y - b.y, a.z - b.z);
         public static Vector3 operator -(Vector3 a) => new Vector3(-a.x, -a.y, -a.z);

@@ -2,7 +2,9 @@
 // UnityCsReference: Runtime/Export/Scripting/GameObject.bindings.cs (GameObject(string), GameObject(string, params
 // Type[]), SetActive(bool), activeSelf, transform, AddComponent<T>() where T : Component),
 // Runtime/Transform/ScriptBindings/Transform.bindings.cs (SetParent(Transform, bool), localPosition, localRotation,
-// localScale), Runtime/Transform/ScriptBindings/RectTransform.bindings.cs (anchorMin, anchorMax, anchoredPosition,
+// localScale, position, rotation, forward, SetPositionAndRotation(Vector3, Quaternion)),
+// Runtime/Export/Scripting/Component.bindings.cs (transform, gameObject: the link AddComponent makes here),
+// Runtime/Transform/ScriptBindings/RectTransform.bindings.cs (anchorMin, anchorMax, anchoredPosition,
 // sizeDelta, pivot), Runtime/Export/Math/Vector2.cs, Runtime/Export/Math/Color.cs, Runtime/Export/Resources/Resources.cs
 // (GetBuiltinResource<T>(string) where T : Object), Modules/TextRendering/TextRendering.bindings.cs (Font, TextAnchor),
 // Modules/UI/ScriptBindings/UICanvas.bindings.cs (Canvas.renderMode, RenderMode). Activation is real here (a flag),
@@ -13,25 +15,44 @@ namespace UnityEngine
 {
     public sealed class GameObject : Object
     {
-        public GameObject(string name) { this.name = name; }
+        public GameObject(string name)
+        {
+            this.name = name;
+            transform = new Transform { owner = this };
+        }
 
-        public GameObject(string name, params Type[] components) { this.name = name; }
+        public GameObject(string name, params Type[] components) : this(name) { }
 
         public bool activeSelf { get; private set; } = true;
 
         public void SetActive(bool value) => activeSelf = value;
 
-        public Transform transform { get; } = new Transform();
+        public Transform transform { get; }
 
-        public T AddComponent<T>() where T : Component => (T)Activator.CreateInstance(typeof(T), true);
+        public T AddComponent<T>() where T : Component
+        {
+            var component = (T)Activator.CreateInstance(typeof(T), true);
+            component.owner = this;
+            return component;
+        }
     }
 
     public class Transform : Component
     {
         public Vector3 localPosition { get; set; }
-        public Quaternion localRotation { get; set; }
+        public Quaternion localRotation { get; set; } = Quaternion.identity;
         public Vector3 localScale { get; set; }
         public void SetParent(Transform parent, bool worldPositionStays) { }
+
+        // World space. The stand-in keeps no hierarchy (SetParent does nothing), so world and local are the same.
+        public Vector3 position { get => localPosition; set => localPosition = value; }
+        public Quaternion rotation { get => localRotation; set => localRotation = value; }
+        public Vector3 forward => rotation * Vector3.forward; // Unity also has a setter (LookRotation), unused here
+        public void SetPositionAndRotation(Vector3 position, Quaternion rotation)
+        {
+            this.position = position;
+            this.rotation = rotation;
+        }
     }
 
     public sealed class RectTransform : Transform

@@ -32,7 +32,16 @@ namespace HeadGait.Tests
 
             var fathers = new Dictionary<long, long>();
             var children = new Dictionary<long, List<long>>();
-            foreach (var d in docs.Where(d => d.Contains("\nTransform:\n")))
+            // A prefab instance's root is a stripped Transform; its father is the instance's m_TransformParent.
+            foreach (var d in docs.Where(d => d.Contains(" stripped\nTransform:\n")))
+            {
+                long id = long.Parse(Regex.Match(d, @"&(\d+)").Groups[1].Value);
+                string instance = Regex.Match(d, @"m_PrefabInstance: \{fileID: (\d+)\}").Groups[1].Value;
+                var prefabInstance = docs.Single(p => p.StartsWith($"!u!1001 &{instance}\n"));
+                fathers[id] = long.Parse(Regex.Match(prefabInstance, @"m_TransformParent: \{fileID: (\d+)\}").Groups[1].Value);
+            }
+            Assert.That(fathers, Has.Count.EqualTo(1), "the humanoid's prefab instance has its stripped root Transform");
+            foreach (var d in docs.Where(d => d.Contains("\nTransform:\n") && !d.Contains(" stripped\n")))
             {
                 long id = long.Parse(Regex.Match(d, @"&(\d+)").Groups[1].Value);
                 fathers[id] = long.Parse(Regex.Match(d, @"m_Father: \{fileID: (\d+)\}").Groups[1].Value);
@@ -42,7 +51,7 @@ namespace HeadGait.Tests
             foreach (var (child, father) in fathers.Select(kv => (kv.Key, kv.Value)))
                 if (father != 0) Assert.That(children[father], Does.Contain(child), $"transform {child}'s father {father} does not list it");
             foreach (var kv in children)
-                foreach (long c in kv.Value) Assert.That(fathers[c], Is.EqualTo(kv.Key));
+                foreach (long c in kv.Value) Assert.That(fathers[c], Is.EqualTo(kv.Key), $"transform {kv.Key} lists {c}, whose father is another");
         }
 
         [Test]

@@ -145,6 +145,9 @@ namespace HeadGait.Tests
                         CheckReference(asset, d, key, reference, local, guids, Load, problems);
             }
 
+            foreach (var asset in assets.Where(a => a.EndsWith(".unity", StringComparison.Ordinal) || a.EndsWith(".prefab", StringComparison.Ordinal)))
+                CheckHierarchy(asset, Load(asset), guids, Load, problems);
+
             var map = LoadPhaseMap(package, problems);
             foreach (var controller in assets.Where(a => a.EndsWith(".controller", StringComparison.Ordinal)))
                 CheckController(controller, Load(controller), guids, Load, problems);
@@ -226,6 +229,58 @@ namespace HeadGait.Tests
                 var docs = load(target);
                 bool found = docs.Any(d => d.FileId == fileId) || (fileId == GaitAssetFiles.PrefabRootId && target.EndsWith(".prefab", StringComparison.Ordinal));
                 if (!found) problems.Add($"{where}: fileID {fileId} is not an object of {target}");
+            }
+        }
+
+        static long RefId(YamlNode node) => node is YamlMappingNode m && long.TryParse(Get(m, "fileID"), NumberStyles.Integer, CultureInfo.InvariantCulture, out long id) ? id : 0;
+
+        static IEnumerable<long> RefIds(YamlNode node) => node is YamlSequenceNode seq ? seq.Children.Select(RefId) : Enumerable.Empty<long>();
+
+        /// <summary>
+        /// The Transform tree of a scene or prefab agrees both ways: each Transform (class 4, RectTransform 224) is listed in
+        /// its m_Father's m_Children, and each child listed names that father. A prefab instance (1001) under a scene object
+        /// (m_Modification.m_TransformParent) shows its root as a `stripped` Transform (m_PrefabInstance: the instance;
+        /// m_CorrespondingSourceObject: the source prefab's root Transform), which the parent lists like any child; a missing
+        /// one leaves the instance unparented when Unity loads the scene.
+        /// </summary>
+        static void CheckHierarchy(string file, List<UnityObject> docs, Dictionary<string, string> guids, Func<string, List<UnityObject>> load, List<string> problems)
+        {
+            bool IsTransform(UnityObject d) => d.ClassId == 4 || d.ClassId == 224;
+            var byId = new Dictionary<long, UnityObject>();
+            foreach (var d in docs) byId[d.FileId] = d;
+            long ParentOfInstance(long instance)
+                => byId.TryGetValue(instance, out var p) && p.ClassId == 1001 && p.Node("m_Modification") is YamlMappingNode m
+                    && m.Children.TryGetValue(new YamlScalarNode("m_TransformParent"), out var parent) ? RefId(parent) : 0;
+            long FatherOf(UnityObject t) => t.Stripped ? ParentOfInstance(RefId(t.Node("m_PrefabInstance"))) : RefId(t.Node("m_Father"));
+
+            foreach (var t in docs.Where(IsTransform))
+            {
+                long father = FatherOf(t);
+                if (father == 0) continue;
+                if (!byId.TryGetValue(father, out var f) || !IsTransform(f)) problems.Add($"{file}: transform &{t.FileId}'s father &{father} is not a Transform in the file");
+                else if (!RefIds(f.Node("m_Children")).Contains(t.FileId))
+                    problems.Add($"{file}: transform &{t.FileId}{(t.Stripped ? " (a prefab instance's root)" : "")} is not listed in its father &{father}'s m_Children");
+            }
+            foreach (var t in docs.Where(d => IsTransform(d) && !d.Stripped))
+                foreach (long c in RefIds(t.Node("m_Children")))
+                    if (byId.TryGetValue(c, out var child) && IsTransform(child) && FatherOf(child) != t.FileId)
+                        problems.Add($"{file}: transform &{t.FileId} lists &{c} as a child, whose father is &{FatherOf(child)}");
+
+            foreach (var instance in docs.Where(d => d.ClassId == 1001))
+            {
+                string source = (instance.Node("m_SourcePrefab") as YamlMappingNode) is YamlMappingNode sp ? Get(sp, "guid") : null;
+                var roots = docs.Where(d => IsTransform(d) && d.Stripped && RefId(d.Node("m_PrefabInstance")) == instance.FileId).ToList();
+                if (ParentOfInstance(instance.FileId) != 0 && roots.Count == 0)
+                    problems.Add($"{file}: prefab instance &{instance.FileId} under &{ParentOfInstance(instance.FileId)} has no stripped root Transform");
+                foreach (var root in roots)
+                {
+                    var corresponding = root.Node("m_CorrespondingSourceObject") as YamlMappingNode;
+                    string guid = corresponding == null ? null : Get(corresponding, "guid");
+                    var prefabRoot = guid != null && guid == source && guids.TryGetValue(guid, out var prefab)
+                        ? load(prefab).FirstOrDefault(d => d.FileId == RefId(corresponding)) : null;
+                    if (prefabRoot == null || !IsTransform(prefabRoot) || RefId(prefabRoot.Node("m_Father")) != 0)
+                        problems.Add($"{file}: stripped transform &{root.FileId} of prefab instance &{instance.FileId} is not the root Transform of its source prefab");
+                }
             }
         }
 

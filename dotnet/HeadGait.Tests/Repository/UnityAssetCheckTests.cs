@@ -67,7 +67,21 @@ namespace HeadGait.Tests
                 string playerGuid = GaitAssetFiles.GuidOf(copy, GaitAssetFiles.RecordingPlayerScript);
                 Edit(scene, t => t.Replace("guid: " + playerGuid, "guid: abcdefabcdefabcdefabcdefabcdefab"));
 
+                // The study scene's humanoid (a prefab instance) no longer listed under its parent, and the block avatar's
+                // FollowHead with a field the script does not have.
+                string study = StudyScene.PathIn(copy);
+                var studyScene = File.ReadAllText(study);
+                long instanceRoot = long.Parse(System.Text.RegularExpressions.Regex.Match(studyScene, @"--- !u!4 &(\d+) stripped").Groups[1].Value);
+                Edit(study, t => t.Replace("  m_Children:\n  - {fileID: " + instanceRoot + "}\n", "  m_Children: []\n"));
+                Edit(study, t => t.Replace("  positionSmoothing: 0\n", "  positionLag: 0\n"));
+                long legsRoot = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "Transform");
+                long avatar = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, GaitAssetFiles.AvatarName, "Transform");
+                Edit(study, t => t.Replace("m_CorrespondingSourceObject: {fileID: " + legsRoot + ",", "m_CorrespondingSourceObject: {fileID: " + avatar + ","));
+
                 var problems = string.Join("\n", UnityAssetCheck.Problems(copy));
+                Assert.That(problems, Does.Contain($"transform &{instanceRoot} (a prefab instance's root) is not listed in its father"));
+                Assert.That(problems, Does.Contain("field 'positionLag' is not declared in FollowHead.cs"));
+                Assert.That(problems, Does.Contain($"stripped transform &{instanceRoot} of prefab instance").And.Contain("is not the root Transform of its source prefab"));
                 Assert.That(problems, Does.Contain("parameter StridePhase (AnimatorParameters) is missing"));
                 Assert.That(problems, Does.Contain("parameter Stride is not in AnimatorParameters"));
                 Assert.That(problems, Does.Contain("does not take its normalized time from StridePhase"));
@@ -115,7 +129,7 @@ namespace HeadGait.Tests
         static string CopyOfPackage()
         {
             string copy = Path.Combine(Path.GetTempPath(), "headgait-assets-" + Guid.NewGuid().ToString("N"));
-            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Animation/Humanoid", "Runtime/Prefabs", "Runtime/Components", "Samples~/Legs", "Samples~/Recordings/eval" })
+            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Animation/Humanoid", "Runtime/Prefabs", "Runtime/Components", "Runtime/Components/Study", "Samples~/Legs", "Samples~/Study", "Samples~/Recordings/eval" })
             {
                 foreach (var file in Directory.GetFiles(Path.Combine(Package, folder)))
                 {

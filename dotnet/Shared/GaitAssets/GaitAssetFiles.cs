@@ -27,6 +27,7 @@ namespace HeadGait.Tooling
         public const string GaitLegAnimatorScript = "Runtime/Components/GaitLegAnimator.cs";
         public const string HeadImuSourceScript = "Runtime/Components/HeadImuSource.cs";
         public const string RecordingPlayerScript = "Runtime/Components/RecordingPlayer.cs";
+        public const string FollowHeadScript = "Runtime/Components/FollowHead.cs";
         public const string CorTemplate = "Models/cor_template.txt";
 
         /// <summary>A TextAsset's fileID in its imported file (class 49).</summary>
@@ -153,6 +154,14 @@ namespace HeadGait.Tooling
                 "  m_CullingMode: 0\n  m_UpdateMode: 0\n  m_ApplyRootMotion: 0\n  m_LinearVelocityBlending: 0\n  m_StabilizeFeet: 0\n" +
                 "  m_WarningMessage: \n  m_HasTransformHierarchy: 1\n  m_AllowConstantClipSamplingOptimization: 1\n  m_KeepAnimatorStateOnDisable: 0\n", true);
 
+        /// <summary>
+        /// A FollowHead with its defaults: follows the main camera (the XR camera is tagged MainCamera), feet at world height 0,
+        /// heading smoothed over 0.1 s.
+        /// </summary>
+        public static long AddFollowHead(UnityHierarchyYaml h, string path, string package)
+            => h.AddScript(path, "FollowHead", GuidOf(package, FollowHeadScript),
+                "  head: {fileID: 0}\n  floor: {fileID: 0}\n  floorHeight: 0\n  positionSmoothing: 0\n  headingSmoothing: 0.1\n");
+
         static string MannequinPrefabYaml()
         {
             var h = new UnityHierarchyYaml(MannequinRoot);
@@ -172,6 +181,7 @@ namespace HeadGait.Tooling
             long legs = h.AddScript("", "GaitLegAnimator", GuidOf(package, GaitLegAnimatorScript),
                 "  animator: " + UnityYaml.Ref(animator) + "\n  classifier: 0\n  corTemplate: " + UnityYaml.Ref(TextAssetId, GuidOf(package, CorTemplate), 3) + "\n");
             h.AddScript("", "HeadImuSource", GuidOf(package, HeadImuSourceScript), "  target: " + UnityYaml.Ref(legs) + "\n  mode: 0\n");
+            AddFollowHead(h, "", package);
             return h.Write();
         }
     }

@@ -4,7 +4,7 @@ namespace HeadGait.Tooling
 {
     /// <summary>
     /// The Legs sample's scene: a floor, a light, a camera looking at the avatar's legs from its right side, an instance of
-    /// the drop-in prefab (its HeadImuSource switched to External) and a RecordingPlayer replaying a sample recording into
+    /// the drop-in prefab (its HeadImuSource switched to External, its FollowHead off) and a RecordingPlayer replaying a sample recording into
     /// the prefab's GaitLegAnimator, so the legs can be watched without a headset. A prefab instance is a PrefabInstance
     /// (1001) listing its modifications, plus a `stripped` document for each of its objects the scene refers to.
     /// The scene's settings documents (OcclusionCullingSettings 29, RenderSettings 104, LightmapSettings 157,
@@ -22,6 +22,7 @@ namespace HeadGait.Tooling
             string legsGuid = GaitAssetFiles.LegsPrefabGuid;
             long legAnimatorInPrefab = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "GaitLegAnimator");
             long imuInPrefab = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "HeadImuSource");
+            long followInPrefab = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "FollowHead");
             long rootTransformInPrefab = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, "", "Transform");
 
             var h = new UnityHierarchyYaml(Scope);
@@ -60,6 +61,7 @@ namespace HeadGait.Tooling
             Modify(rootTransformInPrefab, "m_LocalPosition.y", "0");
             Modify(rootTransformInPrefab, "m_LocalPosition.z", "0");
             Modify(imuInPrefab, "mode", ((int)2).ToString()); // HeadImuMode.External: the recording feeds the legs
+            Modify(followInPrefab, "m_Enabled", "0"); // the avatar stays in front of this fixed camera, not under it
             sb.Append("    m_RemovedComponents: []\n    m_RemovedGameObjects: []\n    m_AddedGameObjects: []\n    m_AddedComponents: []\n");
             sb.Append("  m_SourcePrefab: ").Append(UnityYaml.Ref(GaitAssetFiles.PrefabRootId, legsGuid, 3)).Append('\n');
             sb.Append(UnityYaml.Document(114, StrippedLegAnimatorId, "MonoBehaviour", stripped: true));

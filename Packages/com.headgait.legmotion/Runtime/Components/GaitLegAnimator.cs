@@ -14,7 +14,8 @@ namespace HeadGait.Unity
     /// (<see cref="GaitBatchRunner"/>, <see cref="GaitJobScheduler"/>). Each Update completes last frame's job, writes its
     /// latest frame to the Animator and schedules the samples that arrived since. Update (not LateUpdate) because the
     /// Animator evaluates between Update and LateUpdate; the execution order puts this after sources that push in their
-    /// own Update.
+    /// own Update. While the component is disabled, pushed samples wait for its next Update in a backlog bounded to the
+    /// newest 2 s (<see cref="GaitBatchRunner.DroppedBacklog"/> counts the older ones dropped).
     /// </para>
     /// </summary>
     [DisallowMultipleComponent]

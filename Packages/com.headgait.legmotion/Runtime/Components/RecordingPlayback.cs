@@ -6,18 +6,30 @@ namespace HeadGait.Unity
     /// Plays a <see cref="Recording"/> into a <see cref="GaitBatchRunner"/> in real time (the logic behind
     /// <see cref="RecordingPlayer"/>). Every start from the top is a new stream for the runner: it is reset, so the
     /// recording's timestamps, which jump back to the beginning, are not rejected as late against the previous pass.
+    /// Rows are due by the recording's own time steps, each played for at most <see cref="MaxRowGap"/>: a row stamped far
+    /// ahead (a +1e6 s glitch, 1e308) would otherwise hold the replay for ever, and a row stamped back plays at once. The
+    /// rows reach the target with their timestamps unchanged; its clock policy judges them.
     /// </summary>
     public sealed class RecordingPlayback
     {
+        /// <summary>The longest wait between two rows (s): longer pauses in a recording play this long.</summary>
+        public const double MaxRowGap = 1.0;
+
         readonly Recording data;
-        readonly double firstTime;
+        readonly double[] due; // playback time at which each row is handed over (s after the first row)
         int next;
         double clock;
 
         public RecordingPlayback(Recording data)
         {
             this.data = data ?? throw new ArgumentNullException(nameof(data));
-            firstTime = data.Samples.Count > 0 ? data.Samples[0].Imu.Time : 0;
+            due = new double[data.Samples.Count];
+            for (int i = 1; i < due.Length; i++)
+            {
+                double step = data.Samples[i].Imu.Time - data.Samples[i - 1].Imu.Time;
+                // NaN (a non-finite time) and backward steps take no time; inf and absurd jumps take MaxRowGap.
+                due[i] = due[i - 1] + (step > 0 ? Math.Min(step, MaxRowGap) : 0);
+            }
         }
 
         public bool Loop { get; set; } = true;
@@ -43,7 +55,7 @@ namespace HeadGait.Unity
         {
             if (target == null || data.Samples.Count == 0) return;
             clock += seconds;
-            while (next < data.Samples.Count && data.Samples[next].Imu.Time - firstTime <= clock)
+            while (next < data.Samples.Count && due[next] <= clock)
             {
                 var row = data.Samples[next++];
                 LastRow = row;

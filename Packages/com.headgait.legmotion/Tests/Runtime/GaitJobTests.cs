@@ -221,6 +221,50 @@ namespace HeadGait.Tests
             Assert.That(runner.RejectedNotFinite, Is.EqualTo(1));
         }
 
+        [Test]
+        public void SamplesPushedWhileNoFrameRunsKeepOnlyTheNewestTwoSeconds()
+        {
+            // The component disabled for 14 s while a 500 Hz source kept pushing: no Step ran.
+            var script = new StreamScript { StartTime = 0, SampleRate = 500 };
+            script.Stand(1.5).Walk(12.5, Foot.Left);
+            var samples = WalkingStreamGenerator.Generate("disabled", new GaitSubject(), script, 11UL).Samples;
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            foreach (var r in samples) Assert.That(runner.Push(r.Imu), Is.EqualTo(SampleOutcome.Accepted));
+
+            double last = samples[samples.Count - 1].Imu.Time;
+            int kept = 0;
+            foreach (var r in samples) if (r.Imu.Time >= last - GaitBatchRunner.MaxBacklogSeconds) kept++;
+            Assert.That(kept, Is.GreaterThan(GaitBatchRunner.MinBacklogSamples), "the time bound is what is tested here");
+            Assert.That(runner.Pending, Is.EqualTo(kept), "the backlog is the newest 2 s");
+            Assert.That(runner.DroppedBacklog, Is.EqualTo(samples.Count - kept));
+
+            // Enabled again: the backlog is one batch, and the avatar walks on from the newest samples.
+            var scheduler = new CountingScheduler(runner);
+            runner.Step(scheduler);
+            runner.Step(scheduler);
+            Assert.That(runner.Latest.Time, Is.EqualTo(last).Within(0.02));
+            Assert.That(runner.Windows, Is.InRange(100, 201), "windows of the 2 s kept (100 Hz, after the first window fills), not of 14 s");
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Walking));
+        }
+
+        [Test]
+        public void TheBacklogIsBoundedWhateverTheTimestampsSay()
+        {
+            // Backward timestamps never look older than 2 s; the sample count bounds them.
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            for (int i = 0; i < 20000; i++) runner.Push(new ImuSample(1000 - i * 0.001, 0, 0, 9.81));
+            Assert.That(runner.Pending, Is.EqualTo(GaitBatchRunner.MaxBacklogSamples));
+            Assert.That(runner.DroppedBacklog, Is.EqualTo(20000 - GaitBatchRunner.MaxBacklogSamples));
+
+            // A frame's worth of samples with one stamped 1e6 s ahead: the good ones before it are kept for the pipeline.
+            runner.Reset();
+            for (int i = 0; i < 10; i++) runner.Push(new ImuSample(i * 0.01, 0, 0, 9.81));
+            runner.Push(new ImuSample(1e6, 0, 0, 9.81));
+            for (int i = 10; i < 20; i++) runner.Push(new ImuSample(i * 0.01, 0, 0, 9.81));
+            Assert.That(runner.Pending, Is.EqualTo(21));
+            Assert.That(runner.DroppedBacklog, Is.EqualTo(20000 - GaitBatchRunner.MaxBacklogSamples), "nothing more dropped");
+        }
+
         static long AllocatedPerFrameLoop(GaitBatchRunner runner, IGaitBatchScheduler scheduler, List<ImuSample> samples, int fps)
         {
             int handed = 0, frame = 1;

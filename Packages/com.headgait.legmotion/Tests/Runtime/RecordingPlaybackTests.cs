@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System.IO;
 using HeadGait.Unity;
 using NUnit.Framework;
@@ -80,6 +81,46 @@ namespace HeadGait.Tests
             Assert.That(pre.Skipped, Is.EqualTo(0));
             Assert.That(pre.Rebases, Is.EqualTo(0));
             Assert.That(runner.Windows, Is.GreaterThan(2 * recording.Samples.Count - 200), "every pass was classified");
+        }
+
+        /// <summary>walk_straight with its middle row stamped absurdly: one row, or every row from there on.</summary>
+        static Recording WithAbsurdRow(Recording source, string kind)
+        {
+            int middle = source.Samples.Count / 2;
+            var rows = new List<RecordedSample>();
+            for (int i = 0; i < source.Samples.Count; i++)
+            {
+                var s = source.Samples[i];
+                double time = kind == "one row +1e6 s" && i == middle ? s.Imu.Time + 1e6
+                    : kind == "one row at 1e308" && i == middle ? 1e308
+                    : kind == "+1e6 s from the middle on" && i >= middle ? s.Imu.Time + 1e6
+                    : s.Imu.Time;
+                rows.Add(new RecordedSample(new ImuSample(time, s.Imu.X, s.Imu.Y, s.Imu.Z), s.Left, s.Right, s.Line));
+            }
+            return new Recording(source.Name + ", " + kind, rows);
+        }
+
+        [Test]
+        public void ARowStampedFarAheadDoesNotStallThePlayer([Values("one row +1e6 s", "one row at 1e308", "+1e6 s from the middle on")] string kind)
+        {
+            // Regression (issue 9): rows were due at their time since the first row, so a row stamped 1e6 s ahead (or at
+            // 1e308) was due after 11.6 days (or never) and every row behind it waited with it.
+            var clean = Walk();
+            var recording = WithAbsurdRow(clean, kind);
+            long Windows(Recording r)
+            {
+                var runner = new GaitBatchRunner(new GaitPipeline(new ThresholdClassifier()));
+                var playback = new RecordingPlayback(r) { Loop = false };
+                playback.Restart(runner);
+                Play(playback, runner, new InlineScheduler(runner), clean.Duration + RecordingPlayback.MaxRowGap + 0.5);
+                Assert.That(playback.Finished, Is.True, r.Name + " stalled at row " + playback.Played);
+                Assert.That(playback.Played, Is.EqualTo(r.Samples.Count));
+                Assert.That(playback.LastRow.Imu.Time, Is.EqualTo(r.Samples[r.Samples.Count - 1].Imu.Time));
+                return runner.Windows;
+            }
+            long cleanWindows = Windows(clean);
+            // The rows after the absurd one still reach the pipeline and are classified (its clock policy drops or re-bases).
+            Assert.That(Windows(recording), Is.EqualTo(cleanWindows).Within(100), "windows lost after the absurd row");
         }
 
         [Test]

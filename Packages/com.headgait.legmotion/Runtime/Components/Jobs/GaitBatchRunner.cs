@@ -14,13 +14,29 @@ namespace HeadGait.Unity
     /// the batch's windows together: <see cref="GaitPipeline.PushBatch"/>).</item>
     /// </list>
     /// A frame never waits for samples: a frame without new samples schedules nothing and shows the last published frame.
+    /// Samples handed over while no frame runs (the component disabled, its source still pushing) wait in a backlog bounded
+    /// to the newest <see cref="MaxBacklogSeconds"/> of sensor time, oldest dropped first (<see cref="DroppedBacklog"/>).
     /// The published frame is one frame behind the samples (the batch handed over this frame is read next frame).
     /// Not thread-safe beyond that split: call everything except ExecuteBatch from the main thread.
     /// </summary>
     public sealed class GaitBatchRunner
     {
+        /// <summary>Sensor time kept waiting for a batch (s): enough history for the classifier's window when frames resume.</summary>
+        public const double MaxBacklogSeconds = 2;
+
+        /// <summary>
+        /// Samples always kept, whatever their times say: more than one frame brings at any sensor rate (1 kHz at 10 fps is
+        /// 100), so a glitched timestamp inside a frame never drops that frame's good samples.
+        /// </summary>
+        public const int MinBacklogSamples = 256;
+
+        /// <summary>Samples never exceeded, whatever their times say (2 s at 4 kHz): bounds the backlog of a stream whose
+        /// timestamps are garbage.</summary>
+        public const int MaxBacklogSamples = 8192;
+
         readonly GaitPipeline pipeline;
         ImuSample[] pending;
+        int pendingStart;         // the backlog's oldest sample, > 0 after dropping
         int pendingCount;
         ImuSample[] batch;
         int batchCount;
@@ -68,6 +84,13 @@ namespace HeadGait.Unity
         public int RejectedNotFinite { get; private set; }
 
         /// <summary>
+        /// Samples dropped, oldest first, because more than <see cref="MaxBacklogSeconds"/> (at least
+        /// <see cref="MinBacklogSamples"/>, at most <see cref="MaxBacklogSamples"/>) waited for a batch: frames stopped
+        /// (the component disabled) while the source kept pushing.
+        /// </summary>
+        public long DroppedBacklog { get; private set; }
+
+        /// <summary>
         /// Passed to <see cref="GaitPipeline.SourceLag"/> before the next batch (seconds; the pose path sets it), so it never
         /// changes under a running batch.
         /// </summary>
@@ -88,9 +111,28 @@ namespace HeadGait.Unity
                 RejectedNotFinite++;
                 return SampleOutcome.SkippedNotFinite;
             }
-            if (pendingCount == pending.Length) Array.Resize(ref pending, pending.Length * 2);
-            pending[pendingCount++] = sample;
+            if (pendingStart + pendingCount == pending.Length)
+            {
+                // Grow while the backlog fills half the buffer, else move it to the front: amortised O(1) when dropping.
+                if (pendingCount >= pending.Length / 2) Array.Resize(ref pending, pending.Length * 2);
+                MoveBacklogToFront();
+            }
+            pending[pendingStart + pendingCount++] = sample;
+            while (pendingCount > MinBacklogSamples
+                   && (pendingCount > MaxBacklogSamples || sample.Time - pending[pendingStart].Time > MaxBacklogSeconds))
+            {
+                pendingStart++;
+                pendingCount--;
+                DroppedBacklog++;
+            }
             return SampleOutcome.Accepted;
+        }
+
+        void MoveBacklogToFront()
+        {
+            if (pendingStart == 0) return;
+            Array.Copy(pending, pendingStart, pending, 0, pendingCount);
+            pendingStart = 0;
         }
 
         /// <summary>
@@ -99,6 +141,7 @@ namespace HeadGait.Unity
         /// </summary>
         public void Reset()
         {
+            pendingStart = 0;
             pendingCount = 0;
             generation++;
             if (inFlight) resetPipeline = true;
@@ -122,6 +165,7 @@ namespace HeadGait.Unity
                 resetPipeline = false;
             }
             pipeline.SourceLag = sourceLag;
+            MoveBacklogToFront(); // the batch reads from index 0
             // Swap buffers: the batch owns the samples now, new hand-overs go to the other buffer.
             var full = pending;
             pending = batch;
