@@ -45,7 +45,10 @@ namespace HeadGait.Tests
             Assert.That(r.FileWarnings, Is.EqualTo(5));
             Assert.That(r.SkippedSamples, Is.GreaterThan(10));
             Assert.That(r.Gaps, Is.EqualTo(1));
-            Assert.That(r.ClassifierMetrics.MisclassificationRate, Is.LessThan(0.15));
+            // The glitches cost little: within 5 points of the same walk recorded cleanly.
+            var clean = ReplayEvaluator.Run(SampleLibrary.GlitchyBeforeCorruption(), new CorrelationClassifier(TestData.Template));
+            Assert.That(r.ClassifierMetrics.MisclassificationRate, Is.LessThan(clean.ClassifierMetrics.MisclassificationRate + 0.05));
+            TestContext.WriteLine($"glitchy {r.ClassifierMetrics.MisclassificationRate:P1}, clean {clean.ClassifierMetrics.MisclassificationRate:P1}");
         }
 
         [Test]

@@ -360,6 +360,8 @@ namespace HeadGait
         /// a true contact to the peaks it detected (measured with the threshold in force, since weaker early peaks would
         /// bias it); a template with fewer than 8 matched peaks takes the median of all.
         /// </summary>
+        public const double MinCalibratedCorrelation = 0.5;
+
         public static CorrelationTemplate Calibrate(CorrelationTemplate template, IReadOnlyList<Recording> recordings, CorrelationSettings settings = null)
         {
             var trueR = new List<double>();
@@ -370,9 +372,10 @@ namespace HeadGait
                 else falseR.Add(r);
             });
             if (trueR.Count < 8) return template;
-            // Threshold: minimise missed true peaks plus accepted false ones (both per true contact).
+            // Threshold: minimise missed true peaks plus accepted false ones (both per true contact). Not under 0.5: a
+            // weaker match is no step shape, however few false peaks a tight walking gate leaves in the training data.
             double bestThreshold = template.MinCorrelation, bestCost = double.PositiveInfinity;
-            for (double th = 0.2; th <= 0.95; th += 0.01)
+            for (double th = MinCalibratedCorrelation; th <= 0.95; th += 0.01)
             {
                 double missed = 0, accepted = 0;
                 foreach (var r in trueR) if (r < th) missed++;

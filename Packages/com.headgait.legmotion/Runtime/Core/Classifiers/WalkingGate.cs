@@ -88,9 +88,11 @@ namespace HeadGait
         /// Fits the gate on windows of labelled recordings (every 5th window; walking = the newest sample is labelled
         /// walking), both classes weighted equally, then sets the bias so that <paramref name="walkingPass"/> of the walking
         /// windows pass: the gate only has to keep out what clearly is not walking; the detectors decide the rest.
+        /// 0.97 from leave-one-style-out cross-validation of COR: 0.99 let 14 % of gesturing show as walking, 0.97 7.6 %
+        /// (misclassification 28.0 to 27.5 %), 0.94 5.6 % but step recall fell under 95 %.
         /// Throws <see cref="InvalidOperationException"/> without both classes.
         /// </summary>
-        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = 0.99)
+        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = 0.97)
         {
             var walking = new List<double[]>();
             var standing = new List<double[]>();

@@ -89,10 +89,13 @@ namespace HeadGait.Synthetic
             {
                 Name = "glitchy", Set = "eval",
                 Description = "Evaluation: subject E5 with corrupt rows (NaN, text, missing cells), repeated and out-of-order timestamps and a 0.4 s hole.",
-                Build = () => Corrupt(WalkingStreamGenerator.Generate("glitchy", GaitSubject.Random(2005, "eval-E5"),
-                    new StreamScript().Stand(2).Walk(20, Foot.Left).Stand(2), 25), 26),
+                Build = () => Corrupt(GlitchyBeforeCorruption(), 26),
             },
         };
+
+        /// <summary>The 'glitchy' sample as generated, before its rows are corrupted: what a clean sensor would have given.</summary>
+        public static Recording GlitchyBeforeCorruption() => WalkingStreamGenerator.Generate("glitchy", GaitSubject.Random(2005, "eval-E5"),
+            new StreamScript().Stand(2).Walk(20, Foot.Left).Stand(2), 25);
 
         public static Entry Find(string name)
         {
