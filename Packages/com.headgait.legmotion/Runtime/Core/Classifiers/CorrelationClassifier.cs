@@ -332,8 +332,7 @@ namespace HeadGait
         {
             int p = curve.Length;
             int first = start + length - p;
-            double dot = 0, sum, sumSq;
-            for (int j = 0; j < p; j++) dot += signal[first + j] * curve[j];
+            double dot = VectorMath.Dot(signal, first, curve, 0, p), sum, sumSq;
             if (ownSums)
             {
                 sum = sumSq = 0;
@@ -353,6 +352,9 @@ namespace HeadGait
             return ss > 1e-12 ? dot / Math.Sqrt(ss) : 0;
         }
 
+        /// <summary>Calibration never sets the correlation threshold under this.</summary>
+        public const double MinCalibratedCorrelation = 0.5;
+
         /// <summary>
         /// Sets the correlation threshold and each template's contact lag on labelled recordings. First a replay with no
         /// threshold: the r of correlation peaks that match a true contact (within 0.15 s) and of those that do not give the
@@ -360,8 +362,6 @@ namespace HeadGait
         /// a true contact to the peaks it detected (measured with the threshold in force, since weaker early peaks would
         /// bias it); a template with fewer than 8 matched peaks takes the median of all.
         /// </summary>
-        public const double MinCalibratedCorrelation = 0.5;
-
         public static CorrelationTemplate Calibrate(CorrelationTemplate template, IReadOnlyList<Recording> recordings, CorrelationSettings settings = null)
         {
             var trueR = new List<double>();

@@ -1,5 +1,4 @@
 using System;
-using System.Numerics;
 
 namespace HeadGait
 {
@@ -97,19 +96,13 @@ namespace HeadGait
             {
                 int t = direction == 0 ? n : steps - 1 - n;
                 int xo = t * inputs;
-                int lanes = Vector<double>.Count, simd = Vector.IsHardwareAccelerated ? hidden - hidden % lanes : 0;
                 for (int g = 0; g < 4 * hidden; g++)
                 {
                     double z = b[g];
                     int ri = g * inputs;
                     for (int i = 0; i < inputs; i++) z += wi[ri + i] * x[xo + i];
-                    int rh = g * hidden;
-                    // The recurrent product dominates the cost: SIMD lanes where the runtime has them.
-                    var acc = Vector<double>.Zero;
-                    for (int j = 0; j < simd; j += lanes) acc += new Vector<double>(wh, rh + j) * new Vector<double>(h, j);
-                    z += Vector.Dot(acc, Vector<double>.One);
-                    for (int j = simd; j < hidden; j++) z += wh[rh + j] * h[j];
-                    gates[g] = z;
+                    // The recurrent product dominates the cost.
+                    gates[g] = z + VectorMath.Dot(wh, g * hidden, h, 0, hidden);
                 }
                 for (int j = 0; j < hidden; j++)
                 {

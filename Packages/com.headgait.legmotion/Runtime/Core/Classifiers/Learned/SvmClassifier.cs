@@ -1,5 +1,4 @@
 using System;
-using System.Numerics;
 
 namespace HeadGait
 {
@@ -75,16 +74,9 @@ namespace HeadGait
 
         protected override void Score(double[] x, double[] votes)
         {
-            int lanes = Vector<double>.Count, simd = Vector.IsHardwareAccelerated ? width - width % lanes : 0;
             for (int s = 0; s < vectors; s++)
             {
-                int row = s * width;
-                // Dot product with the support vector: SIMD lanes where the runtime has them, the rest one by one.
-                var acc = Vector<double>.Zero;
-                for (int i = 0; i < simd; i += lanes) acc += new Vector<double>(supportVectors, row + i) * new Vector<double>(x, i);
-                double dot = Vector.Dot(acc, Vector<double>.One);
-                for (int i = simd; i < width; i++) dot += supportVectors[row + i] * x[i];
-                double b = gamma * dot + coef0, p = b;
+                double b = gamma * VectorMath.Dot(supportVectors, s * width, x, 0, width) + coef0, p = b;
                 for (int d = 1; d < degree; d++) p *= b;
                 kernel[s] = p;
             }
