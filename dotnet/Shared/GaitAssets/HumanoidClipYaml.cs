@@ -74,20 +74,10 @@ namespace HeadGait.Tooling
             }
 
             var sb = new StringBuilder(UnityYaml.Header);
-            sb.Append(UnityYaml.Document(74, 7400000, "AnimationClip"));
-            sb.Append("  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n");
-            sb.Append("  m_Name: ").Append(GaitClips.Name(clip)).Append('\n');
-            sb.Append("  serializedVersion: 7\n  m_Legacy: 0\n  m_Compressed: 0\n  m_UseHighQualityCurve: 1\n  m_RotationCurves: []\n  m_CompressedRotationCurves: []\n");
+            UnityYaml.AppendClipHeader(sb, GaitClips.Name(clip));
             sb.Append("  m_EulerCurves: []\n  m_PositionCurves: []\n  m_ScaleCurves: []\n  m_FloatCurves:\n").Append(curves);
             sb.Append("  m_PPtrCurves: []\n  m_SampleRate: 60\n  m_WrapMode: 0\n  m_Bounds:\n    m_Center: {x: 0, y: 0, z: 0}\n    m_Extent: {x: 0, y: 0, z: 0}\n");
-            sb.Append("  m_ClipBindingConstant:\n    genericBindings: []\n    pptrCurveMapping: []\n");
-            sb.Append("  m_AnimationClipSettings:\n    serializedVersion: 2\n    m_AdditiveReferencePoseClip: {fileID: 0}\n    m_AdditiveReferencePoseTime: 0\n");
-            sb.Append("    m_StartTime: 0\n    m_StopTime: ").Append(UnityYaml.Number(length)).Append('\n');
-            sb.Append("    m_OrientationOffsetY: 0\n    m_Level: 0\n    m_CycleOffset: 0\n    m_HasAdditiveReferencePose: 0\n");
-            sb.Append("    m_LoopTime: ").Append(clip == LocomotionState.Walking || clip == LocomotionState.Standing ? 1 : 0).Append('\n');
-            // Root rotation and height baked into the pose; the avatar stays where the prefab puts it.
-            sb.Append("    m_LoopBlend: 0\n    m_LoopBlendOrientation: 1\n    m_LoopBlendPositionY: 1\n    m_LoopBlendPositionXZ: 1\n");
-            sb.Append("    m_KeepOriginalOrientation: 1\n    m_KeepOriginalPositionY: 1\n    m_KeepOriginalPositionXZ: 1\n    m_HeightFromFeet: 0\n    m_Mirror: 0\n");
+            UnityYaml.AppendClipSettings(sb, length, clip == LocomotionState.Walking || clip == LocomotionState.Standing, bakeRoot: true);
             sb.Append("  m_EditorCurves:\n").Append(curves);
             sb.Append("  m_EulerEditorCurves: []\n  m_HasGenericRootTransform: 0\n  m_HasMotionFloatCurves: 0\n  m_Events: []\n");
             return sb.ToString();

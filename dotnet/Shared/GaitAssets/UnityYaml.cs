@@ -23,6 +23,31 @@ namespace HeadGait.Tooling
         public static string Document(int classId, long fileId, string type, bool stripped = false)
             => $"--- !u!{classId} &{fileId}{(stripped ? " stripped" : "")}\n{type}:\n";
 
+        /// <summary>An AnimationClip document's opening lines (class 74), up to its curves.</summary>
+        public static void AppendClipHeader(System.Text.StringBuilder sb, string name)
+        {
+            sb.Append(Document(74, 7400000, "AnimationClip"));
+            sb.Append("  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n");
+            sb.Append("  m_Name: ").Append(name).Append('\n');
+            sb.Append("  serializedVersion: 7\n  m_Legacy: 0\n  m_Compressed: 0\n  m_UseHighQualityCurve: 1\n  m_RotationCurves: []\n  m_CompressedRotationCurves: []\n");
+        }
+
+        /// <summary>
+        /// An AnimationClip's binding constant (rebuilt by the editor from the curves on import) and settings; with
+        /// <paramref name="bakeRoot"/> root rotation and position are baked into the pose (the avatar stays where it is put).
+        /// </summary>
+        public static void AppendClipSettings(System.Text.StringBuilder sb, double length, bool loop, bool bakeRoot)
+        {
+            sb.Append("  m_ClipBindingConstant:\n    genericBindings: []\n    pptrCurveMapping: []\n");
+            sb.Append("  m_AnimationClipSettings:\n    serializedVersion: 2\n    m_AdditiveReferencePoseClip: {fileID: 0}\n    m_AdditiveReferencePoseTime: 0\n");
+            sb.Append("    m_StartTime: 0\n    m_StopTime: ").Append(Number(length)).Append('\n');
+            sb.Append("    m_OrientationOffsetY: 0\n    m_Level: 0\n    m_CycleOffset: 0\n    m_HasAdditiveReferencePose: 0\n");
+            sb.Append("    m_LoopTime: ").Append(loop ? 1 : 0).Append('\n');
+            int b = bakeRoot ? 1 : 0;
+            sb.Append("    m_LoopBlend: 0\n    m_LoopBlendOrientation: ").Append(b).Append("\n    m_LoopBlendPositionY: ").Append(b).Append("\n    m_LoopBlendPositionXZ: ").Append(b).Append('\n');
+            sb.Append("    m_KeepOriginalOrientation: ").Append(b).Append("\n    m_KeepOriginalPositionY: 1\n    m_KeepOriginalPositionXZ: ").Append(b).Append("\n    m_HeightFromFeet: 0\n    m_Mirror: 0\n");
+        }
+
         public static string Ref(long fileId) => $"{{fileID: {fileId}}}";
 
         public static string Ref(long fileId, string guid, int type) => $"{{fileID: {fileId}, guid: {guid}, type: {type}}}";
