@@ -23,7 +23,7 @@ namespace HeadGait.Tests
                 var q = Yaw(yaw);
                 ImuSample s = default;
                 bool got = false;
-                for (int i = 0; i < 5; i++) got = e.Push(i / 72.0, 0.3, 1.7, -0.2, q[0], q[1], q[2], q[3], out s);
+                for (int i = 0; i < 9; i++) got = e.Push(i / 72.0, 0.3, 1.7, -0.2, q[0], q[1], q[2], q[3], out s);
                 Assert.That(got, Is.True);
                 Assert.That(s.Z, Is.EqualTo(G).Within(1e-9));
                 Assert.That(s.X, Is.EqualTo(0).Within(1e-9));
@@ -48,7 +48,7 @@ namespace HeadGait.Tests
                 if (!e.Push(t, px, py, pz, q[0], q[1], q[2], q[3], out var s)) continue;
                 // Each sample describes the motion Lag before its stamp (the middle of the fitted poses).
                 Assert.That(s.Time, Is.EqualTo(t));
-                Assert.That(e.Lag, Is.InRange(0.025, 0.05));
+                Assert.That(e.Lag, Is.InRange(0.025, 0.065));
                 double tm = s.Time - e.Lag;
                 double up = -0.02 * w1 * w1 * Math.Sin(w1 * tm) + G;
                 double along = 0;                                   // constant speed forward
@@ -58,11 +58,11 @@ namespace HeadGait.Tests
                 worst = Math.Max(worst, Math.Abs(s.Y - sideZ));
                 n++;
             }
-            // Five poses (56 ms at 72 Hz) span enough of the fit window for the first estimate.
-            Assert.That(n, Is.EqualTo(396));
+            // Seven poses (83 ms at 72 Hz) are the first odd count spanning half the fit window.
+            Assert.That(n, Is.EqualTo(394));
             TestContext.WriteLine($"worst error {worst:F3} m/s^2 of a {0.02 * w1 * w1:F2} m/s^2 bob");
-            // The quadratic fit flattens a sinusoid over its 85 ms window a little (2-3 % of the bob at 1.9 Hz).
-            Assert.That(worst, Is.LessThan(0.1));
+            // The quadratic fit flattens a sinusoid over its 120 ms window a little (about 4 % of the bob at 1.9 Hz).
+            Assert.That(worst, Is.LessThan(0.15));
         }
 
         [Test]
@@ -79,7 +79,7 @@ namespace HeadGait.Tests
             Push(0.01, 1.7);
             Push(0.005, 1.7);   // backwards
             for (int i = 2; i <= 6; i++) Push(i / 100.0, 1.7);
-            // At 100 Hz the first estimate needs seven poses (an odd count spanning half the 85 ms window).
+            // At 100 Hz the first estimate needs seven poses (an odd count spanning half the 120 ms window).
             Assert.That(outs, Is.EqualTo(new[] { 0.06 }));
             for (int i = 0; i < 6; i++) Push(0.50 + i / 100.0, 1.7);   // a hole: start again
             Assert.That(outs.Count, Is.EqualTo(1));
