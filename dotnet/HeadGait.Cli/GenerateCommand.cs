@@ -20,7 +20,7 @@ namespace HeadGait.Cli
                     string dir = Path.Combine(root, e.Set);
                     Directory.CreateDirectory(dir);
                     string path = Path.Combine(dir, e.Name + ".csv");
-                    File.WriteAllText(path, SampleLibrary.ToCsv(e));
+                    AtomicFile.WriteAllText(path, SampleLibrary.ToCsv(e));
                     Console.WriteLine($"wrote {path}: {e.Description}");
                 }
                 return 0;

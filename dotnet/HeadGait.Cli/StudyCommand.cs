@@ -175,7 +175,7 @@ namespace HeadGait.Cli
                 foreach (var c in results.Conditions)
                     if (p.Conditions.TryGetValue(c, out var s)) Line(c, p.Position.TryGetValue(c, out int pos) ? pos : 0, s);
             }
-            File.WriteAllText(path, sb.ToString());
+            AtomicFile.WriteAllText(path, sb.ToString());
         }
 
         /// <summary>Grouped bars (mean and SD) per score and condition as SVG; PNG through rsvg-convert (librsvg2-bin).</summary>

@@ -59,7 +59,7 @@ namespace HeadGait.Unity
             pending = new ImuSample[initialCapacity];
             batch = new ImuSample[initialCapacity];
             sourceLag = pipeline.SourceLag;
-            Latest = Standing(0);
+            Latest = AnimatorFrame.Standing(0);
         }
 
         /// <summary>The pipeline the batches run; read it only while <see cref="InFlight"/> is false.</summary>
@@ -146,7 +146,7 @@ namespace HeadGait.Unity
             generation++;
             if (inFlight) resetPipeline = true;
             else pipeline.Reset();
-            Latest = Standing(0);
+            Latest = AnimatorFrame.Standing(0);
             LatestPrediction = default;
         }
 
@@ -199,8 +199,5 @@ namespace HeadGait.Unity
             batchWindows = pipeline.Windows - before;
             batchCount = 0;
         }
-
-        static AnimatorFrame Standing(double time)
-            => new AnimatorFrame(time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
     }
 }

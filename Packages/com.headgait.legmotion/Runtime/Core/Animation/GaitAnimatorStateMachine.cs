@@ -72,6 +72,10 @@ namespace HeadGait
             Resynchronised = resynchronised;
         }
 
+        /// <summary>The standing pose at <paramref name="time"/> (a stream's start, or after a gap or re-base).</summary>
+        public static AnimatorFrame Standing(double time)
+            => new AnimatorFrame(time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+
         public GaitPhase PhaseOf(Foot foot) => foot == Foot.Left ? Left : Right;
 
         public override string ToString() => $"t={Time:F3} {State} s={StridePosition:F3} L={GaitPhases.ShortName(Left)} R={GaitPhases.ShortName(Right)} w={WalkWeight:F2}";

@@ -31,7 +31,7 @@ namespace HeadGait
             animator = new GaitAnimatorStateMachine(classifier.PhaseMap, animatorSettings);
             onWindow = OnWindow;
             if (classifier is LearnedClassifier learned) batch = new LearnedWindowBatch(learned);
-            Latest = new AnimatorFrame(0, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+            Latest = AnimatorFrame.Standing(0);
         }
 
         public StreamPreprocessor Preprocessor => preprocessor;
@@ -118,7 +118,7 @@ namespace HeadGait
             classifier.Reset();
             animator.Reset();
             LatestPrediction = GaitPrediction.Standing(time);
-            Latest = new AnimatorFrame(time, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+            Latest = AnimatorFrame.Standing(time);
         }
 
         void OnWindow(SignalWindow window)
@@ -149,7 +149,7 @@ namespace HeadGait
             classifier.Reset();
             animator.Reset();
             LatestPrediction = default;
-            Latest = new AnimatorFrame(0, LocomotionState.Standing, 0, GaitPhase.Standing, GaitPhase.Standing, 0, 0, false);
+            Latest = AnimatorFrame.Standing(0);
         }
     }
 }
