@@ -66,6 +66,27 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void StartsOverWhenTheClockMovesFarBack()
+        {
+            // Regression: every pose not later than the last was skipped, so a tracking clock that restarted stopped
+            // the pose path for good. A step back beyond a late pose now starts the fit over on the new clock.
+            var e = new PoseAccelerationEstimator();
+            var outs = new List<double>();
+            void Push(double t)
+            {
+                if (e.Push(t, 0, 1.7, 0, 0, 0, 0, 1, out var s)) outs.Add(Math.Round(s.Time, 6));
+            }
+            for (int i = 0; i < 10; i++) Push(500 + i / 100.0);
+            int before = outs.Count;
+            Assert.That(before, Is.GreaterThan(0));
+            Push(500.05);                                   // late: skipped
+            for (int i = 0; i < 10; i++) Push(2 + i / 100.0);
+            Assert.That(e.Skipped, Is.EqualTo(1));
+            // Seven poses on the new clock give the first estimate again, stamped on that clock.
+            Assert.That(outs.GetRange(before, outs.Count - before), Is.EqualTo(new[] { 2.06, 2.07, 2.08, 2.09 }));
+        }
+
+        [Test]
         public void SkipsBadPosesAndRestartsAfterAHole()
         {
             var e = new PoseAccelerationEstimator();

@@ -114,6 +114,20 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AClockThatMovesFarBackIsPassedOnNotRefusedForEver()
+        {
+            // Regression: every event older than the last accepted one was refused, so a sensor clock that restarted
+            // froze the source until it caught up again. Far-back steps now go to the pipeline's clock policy.
+            var phone = new PhoneAccelerometer(PhoneMounting.LandscapeLeft);
+            var kept = new System.Collections.Generic.List<double>();
+            foreach (double t in new[] { 100.00, 100.01, 100.02, 3.00, 3.01, 2.98, 3.02 })
+                if (phone.PushAccelerometer(t, new Vector3(-1, 0, 0), out var s)) kept.Add(s.Time);
+            Assert.That(kept, Is.EqualTo(new[] { 100.00, 100.01, 100.02, 3.00, 3.01, 3.02 }));
+            Assert.That(phone.Timeline.ClockRestarts, Is.EqualTo(1));
+            Assert.That(phone.Timeline.OutOfOrder, Is.EqualTo(1), "a late event on the new clock is still refused");
+        }
+
+        [Test]
         public void EachSampleKeepsItsEventTimeAndRepeatsAreRefused()
         {
             var phone = new PhoneAccelerometer(PhoneMounting.LandscapeLeft);

@@ -59,7 +59,8 @@ namespace HeadGait
 
         /// <summary>
         /// Adds a pose; returns true with the head-frame specific force (x forward, y left, z up) once the poses span the
-        /// fit window. Non-finite values and non-increasing times are skipped; a hole over maxGap starts over.
+        /// fit window. Non-finite values, repeated times and late poses are skipped; a hole over maxGap or a clock that moved
+        /// further back starts over.
         /// </summary>
         public bool Push(double time, double px, double py, double pz, double qx, double qy, double qz, double qw, out ImuSample sample)
         {
@@ -73,12 +74,16 @@ namespace HeadGait
             if (count > 0)
             {
                 double last = t[Index(0)];
-                if (!(time > last))
+                if (time < last - PreprocessorSettings.DefaultBackwardTolerance || time - last > maxGap)
+                {
+                    // A hole, or a clock that restarted further back than a late pose: fit afresh from this pose.
+                    Reset();
+                }
+                else if (!(time > last))
                 {
                     Skipped++;
                     return false;
                 }
-                if (time - last > maxGap) Reset();
             }
             t[head] = time;
             p[head, 0] = px;

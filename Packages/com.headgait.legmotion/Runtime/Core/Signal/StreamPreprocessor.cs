@@ -35,7 +35,10 @@ namespace HeadGait
         public double SuspectJump = 1.0;
 
         /// <summary>Backward steps up to this (s) are late samples and skipped; longer ones are a clock that restarted.</summary>
-        public double BackwardTolerance = 0.1;
+        public double BackwardTolerance = DefaultBackwardTolerance;
+
+        /// <summary>The default <see cref="BackwardTolerance"/>, shared by the sources and the pose estimator in front of the pipeline.</summary>
+        public const double DefaultBackwardTolerance = 0.1;
 
         /// <summary>Suspect samples that must follow each other like a stream (each within MaxGap) before the stream re-bases on them.</summary>
         public int RebaseSamples = 3;
