@@ -23,17 +23,19 @@ namespace HeadGait.Cli
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
             var perFold = new Option<bool>("--per-fold") { Description = "also print each fold's rows" };
             var pose = new Option<string[]>("--pose") { Description = "head-pose recordings of the same clips (e.g. ../shared/data/pose-train): each fold's classifiers also score the pose recordings of its held-out clips through the XR pose path", AllowMultipleArgumentsPerToken = true };
+            var perRecording = new Option<string>("--per-recording") { Description = "also write every held-out recording's scores to this CSV (which recordings fail, and how)" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv)
         {
+            var perRecordingRows = new List<(string scheme, string fold, ReplayResult result)>();
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
@@ -55,9 +57,11 @@ namespace HeadGait.Cli
                     var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
                     if (train.Count == 0 || test.Count == 0) continue;
                     var map = PhaseMapTraining.Learn(train);
-                    var augmented = names.Contains("thr") || names.Contains("cor") ? GaitTraining.WithAugmentation(train, augment) : train;
+                    var augmented = GaitTraining.WithAugmentation(train, augment);
                     var foldModels = new GaitModels();
                     var gate = names.Contains("thr") || names.Contains("cor") ? GaitTraining.TrainGate(augmented) : null;
+                    // The learned classifiers' gate, trained on the fold's training recordings as `headgait train` does.
+                    var learnedGate = names.Any(n => n.StartsWith("svm") || n.StartsWith("blstm")) ? GaitTraining.TrainLearnedGate(augmented) : null;
                     if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gate);
                     if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gate);
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
@@ -71,11 +75,12 @@ namespace HeadGait.Cli
                             missing.Add($"{name} {fold.Name}");
                             continue;
                         }
-                        var results = test.Select(r => ReplayEvaluator.Run(r, foldModels.Create(name, out _))).ToList();
+                        var results = test.Select(r => ReplayEvaluator.Run(r, WithGate(foldModels.Create(name, out _), learnedGate))).ToList();
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
+                        perRecordingRows.AddRange(results.Select(r => (scheme, fold.Name, r)));
                         foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
-                            pooledPose[name].Add(ReplayEvaluator.Run(p, foldModels.Create(name, out _)));
+                            pooledPose[name].Add(ReplayEvaluator.Run(p, WithGate(foldModels.Create(name, out _), learnedGate)));
                     }
                 }
                 Console.WriteLine();
@@ -109,11 +114,23 @@ namespace HeadGait.Cli
                     foreach (var name in names.Where(n => pooledPose[n].Count > 0)) Report.StepRows($"pose {scheme} pooled", pooledPose[name][0].Classifier, pooledPose[name]);
                 }
             }
+            if (perRecordingCsv != null)
+            {
+                Report.WriteRecordingsCsv(perRecordingCsv, perRecordingRows);
+                Console.WriteLine($"\nPer-recording scores: {perRecordingCsv}");
+            }
             Console.WriteLine();
             Report.Legend();
             Console.WriteLine();
             PrintCost(folder, names, recordings);
             return 0;
+        }
+
+        /// <summary>A learned classifier with the fold's own gate (fold models may predate the gate or hold one from other data).</summary>
+        static IGaitClassifier WithGate(IGaitClassifier c, WalkingGate gate)
+        {
+            if (c is LearnedClassifier learned) learned.Gate = gate;
+            return c;
         }
 
         static string RateOf(string recording)

@@ -25,7 +25,7 @@ namespace HeadGait.Cli
             var data = new Option<string[]>("--data") { Description = "labelled CSV recordings or folders of them", Required = true, AllowMultipleArgumentsPerToken = true };
             var output = new Option<string>("--out") { Description = "model folder (default: the package's Models/)" };
             var augment = new Option<int>("--augment") { Description = "augmented copies per recording (time stretch, amplitude and axis scaling)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
-            var learned = new Option<string>("--learned") { Description = "learned classifiers to train with Python: svm,blstm, one of them, or none", DefaultValueFactory = _ => "svm,blstm" };
+            var learned = new Option<string>("--learned") { Description = "learned classifiers to train with Python: svm,blstm, one of them, or none (the walking gate of the SVM and BLSTM files in --out is trained either way)", DefaultValueFactory = _ => "svm,blstm" };
             var cv = new Option<string>("--cv") { Description = "also train the learned classifiers per cross-validation fold (style, file or style,file) for `headgait benchmark`" };
             var cvModels = new Option<string>("--cv-models") { Description = "where the fold models go (default: training/cv-models, not part of the package)" };
             var features = new Option<string>("--features") { Description = "what the learned classifiers read", DefaultValueFactory = _ => DefaultFeatures };
@@ -65,7 +65,11 @@ namespace HeadGait.Cli
                 }
 
                 string kinds = parse.GetValue(learned);
-                if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase)) return 0;
+                if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase))
+                {
+                    if (!onlyFolds) WriteLearnedGate(outDir, training);
+                    return 0;
+                }
                 string workDir = parse.GetValue(work) ?? Path.Combine(Path.GetTempPath(), "headgait-train-windows");
                 var spec = WindowFeatures.Parse(parse.GetValue(features));
                 var names = recordings.Select(r => r.Name).ToList();
@@ -82,6 +86,7 @@ namespace HeadGait.Cli
                 {
                     RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{outDir}\" --models {kinds} {extra}");
                     Verify(outDir);
+                    WriteLearnedGate(outDir, training);
                 }
                 foreach (var scheme in (parse.GetValue(cv) ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
                 {
@@ -157,6 +162,18 @@ namespace HeadGait.Cli
             }
             process.WaitForExit();
             if (process.ExitCode != 0) throw new InvalidOperationException($"{python} {arguments} failed with exit code {process.ExitCode}");
+        }
+
+        /// <summary>The SVM's and BLSTM's walking gate, trained on the same (augmented) recordings, into whichever of their files the folder holds.</summary>
+        static void WriteLearnedGate(string folder, IReadOnlyList<Recording> training)
+        {
+            var files = new[] { GaitModels.SvmFile, GaitModels.BlstmFile }.Select(f => Path.Combine(folder, f)).Where(File.Exists).ToList();
+            if (files.Count == 0) return;
+            var gate = GaitTraining.TrainLearnedGate(training);
+            foreach (var path in files) GaitTraining.WriteGate(path, gate);
+            Console.WriteLine(gate == null
+                ? $"no standing in the recordings: {string.Join(", ", files.Select(Path.GetFileName))} run without a walking gate"
+                : $"walking gate of {string.Join(" and ", files.Select(Path.GetFileName))} ({100 * WalkingGate.LearnedPass:F1} % of walking windows pass): {gate.Serialize()}");
         }
 
         /// <summary>The package's C# forward passes must reproduce what the training framework computed for the reference windows.</summary>

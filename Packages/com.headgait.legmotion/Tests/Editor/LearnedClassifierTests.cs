@@ -183,5 +183,70 @@ namespace HeadGait.Tests
                 Directory.Delete(dir, true);
             }
         }
+
+        static List<GaitPrediction> Predictions(LearnedClassifier classifier, Recording recording)
+            => ReplayEvaluator.Run(recording, classifier, keepTrace: true).Predictions;
+
+        [TestCase("svm")]
+        [TestCase("blstm")]
+        public void AWindowTheWalkingGateRefusesIsStandingWhateverTheModelScores(string name)
+        {
+            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var rec = TestData.Eval("start_stop");
+            var gated = (LearnedClassifier)models.Create(name, out _);
+            Assert.That(gated.Gate, Is.Not.Null, "headgait train writes the walking gate into the committed model file");
+
+            var ungated = (LearnedClassifier)models.Create(name, out _);
+            ungated.Gate = null;
+            var refusing = (LearnedClassifier)models.Create(name, out _);
+            refusing.Gate = new WalkingGate(new double[] { 0, 0, 0, 0, 0, 0, -1 });
+
+            var open = ReplayEvaluator.Run(rec, ungated);
+            var withGate = ReplayEvaluator.Run(rec, gated);
+            Assert.That(Predictions(ungated, rec).FindAll(p => p.IsWalking).Count, Is.GreaterThan(300), "the model alone sees walking");
+            Assert.That(Predictions(refusing, rec).TrueForAll(p => !p.IsWalking), Is.True, "a gate that refuses every window leaves only standing");
+            // The committed gate only keeps out what is clearly not walking: the generated walking still shows.
+            Assert.That(withGate.ClassifierMetrics.WalkingAsStanding, Is.LessThan(open.ClassifierMetrics.WalkingAsStanding + 0.05));
+            Assert.That(withGate.ClassifierMetrics.StandingAsWalking, Is.LessThanOrEqualTo(open.ClassifierMetrics.StandingAsWalking));
+        }
+
+        [Test]
+        public void TrainingWritesTheGateIntoTheModelFileWithoutTouchingItsNetwork()
+        {
+            string path = Path.Combine(Path.GetTempPath(), "headgait-gate-" + Guid.NewGuid().ToString("N") + ".bytes");
+            try
+            {
+                File.WriteAllBytes(path, Blstm());
+                var features = new double[new BlstmClassifier(ModelFile.Load(path)).Features.Width];
+                for (int i = 0; i < features.Length; i++) features[i] = Math.Sin(0.37 * i);
+                double[] Scores() => (double[])new BlstmClassifier(ModelFile.Load(path)).ScoreFeatures(features).Clone();
+                var before = Scores();
+
+                var gate = new WalkingGate(new double[] { 1, 2, 3, 4, 5, 6, -7 });
+                GaitTraining.WriteGate(path, gate);
+                var written = new BlstmClassifier(ModelFile.Load(path));
+                Assert.That(written.Gate.Weights, Is.EqualTo(gate.Weights));
+                Assert.That(Scores(), Is.EqualTo(before), "the network's tensors are unchanged");
+
+                GaitTraining.WriteGate(path, null);
+                Assert.That(new BlstmClassifier(ModelFile.Load(path)).Gate, Is.Null, "no standing to learn from: the stale gate goes");
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
+
+        [TestCase("1,2,3", "7 comma-separated weights")]
+        [TestCase("1,2,3,4,5,6,NaN", "weight 7")]
+        [TestCase("1,2,x,4,5,6,7", "weight 3")]
+        [TestCase("1,2,3,4,5,6,1e9", "weight 7")]
+        public void ABrokenGateNamesTheFileAndTheProblem(string weights, string problem)
+        {
+            var m = ModelFile.Parse(Blstm(), "broken.bytes");
+            m.Set(WalkingGate.ModelKey, weights);
+            var e = Refused(m.ToBytes());
+            Assert.That(e.Message, Does.StartWith("broken.bytes: ").And.Contain("walking gate").And.Contain(problem));
+        }
     }
 }

@@ -77,6 +77,18 @@ namespace HeadGait
             return Math.Log(Math.Sqrt(Math.Max(0, m2 / n - m * m)) + Epsilon);
         }
 
+        /// <summary>Reads weights as <see cref="Serialize"/> writes them; a <see cref="FormatException"/> says what is wrong.</summary>
+        public static WalkingGate Parse(string text)
+        {
+            var parts = (text ?? "").Split(',');
+            if (parts.Length != FeatureCount + 1) throw new FormatException($"a walking gate has {FeatureCount + 1} comma-separated weights, found {parts.Length}");
+            var w = new double[parts.Length];
+            for (int i = 0; i < parts.Length; i++)
+                if (!double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out w[i]) || !ImuSample.IsFiniteNumber(w[i]) || Math.Abs(w[i]) > 1e4)
+                    throw new FormatException($"walking gate weight {i + 1} is '{parts[i].Trim()}', not a finite number below 1e4");
+            return new WalkingGate(w);
+        }
+
         public string Serialize()
         {
             var sb = new StringBuilder();
@@ -85,14 +97,31 @@ namespace HeadGait
         }
 
         /// <summary>
+        /// Share of walking windows THR's and COR's gate lets through. From leave-one-style-out cross-validation of COR: 0.99
+        /// let 14 % of gesturing show as walking, 0.97 7.6 % (misclassification 28.0 to 27.5 %), 0.94 5.6 % but step recall
+        /// fell under 95 %.
+        /// </summary>
+        public const double DetectorPass = 0.97;
+
+        /// <summary>
+        /// Share of walking windows the SVM's and BLSTM's gate lets through: they have a standing class of their own, so
+        /// their gate only keeps out the gesturing they mistake for walking. From leave-one-style-out cross-validation:
+        /// without a gate 14.8 % (SVM) and 5.8 % (BLSTM) of standing showed as walking; 0.97 cut that to 3.9 and 2.2 % but
+        /// step recall fell to 95.8 and 94.5 %; 0.985 gives 5.0 and 2.9 % (gestures of the first corpus 1.5 and 1.1 %)
+        /// with recall 97.3 and 96.0 % and lower misclassification (23.5 to 22.0 %, 18.2 to 17.8 %).
+        /// </summary>
+        public const double LearnedPass = 0.985;
+
+        /// <summary>The model-file key that holds a learned classifier's gate (<see cref="Serialize"/>).</summary>
+        public const string ModelKey = "walking_gate";
+
+        /// <summary>
         /// Fits the gate on windows of labelled recordings (every 5th window; walking = the newest sample is labelled
         /// walking), both classes weighted equally, then sets the bias so that <paramref name="walkingPass"/> of the walking
-        /// windows pass: the gate only has to keep out what clearly is not walking; the detectors decide the rest.
-        /// 0.97 from leave-one-style-out cross-validation of COR: 0.99 let 14 % of gesturing show as walking, 0.97 7.6 %
-        /// (misclassification 28.0 to 27.5 %), 0.94 5.6 % but step recall fell under 95 %.
+        /// windows pass: the gate only has to keep out what clearly is not walking; the classifiers decide the rest.
         /// Throws <see cref="InvalidOperationException"/> without both classes.
         /// </summary>
-        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = 0.97)
+        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = DetectorPass)
         {
             var walking = new List<double[]>();
             var standing = new List<double[]>();

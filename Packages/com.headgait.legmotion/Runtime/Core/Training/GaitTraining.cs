@@ -25,16 +25,34 @@ namespace HeadGait.Training
         }
 
         /// <summary>The walking gate THR and COR share; open when the recordings hold no standing to learn from.</summary>
-        public static WalkingGate TrainGate(IReadOnlyList<Recording> training)
+        public static WalkingGate TrainGate(IReadOnlyList<Recording> training) => TrainLearnedGate(training, WalkingGate.DetectorPass) ?? WalkingGate.Open;
+
+        /// <summary>
+        /// The walking gate of the SVM and BLSTM (<see cref="WalkingGate.LearnedPass"/> unless given); null when the
+        /// recordings hold no standing to learn from (the models then run ungated).
+        /// </summary>
+        public static WalkingGate TrainLearnedGate(IReadOnlyList<Recording> training, double walkingPass = WalkingGate.LearnedPass)
         {
             try
             {
-                return WalkingGate.Train(training);
+                return WalkingGate.Train(training, walkingPass);
             }
             catch (System.InvalidOperationException)
             {
-                return WalkingGate.Open;
+                return null;
             }
+        }
+
+        /// <summary>
+        /// Writes the learned classifiers' gate into a trained SVM or BLSTM model file (or removes a stale one when
+        /// <paramref name="gate"/> is null); the network's tensors are left as they are.
+        /// </summary>
+        public static void WriteGate(string modelPath, WalkingGate gate)
+        {
+            var model = ModelFile.Load(modelPath);
+            if (gate == null) model.Values.Remove(WalkingGate.ModelKey);
+            else model.Set(WalkingGate.ModelKey, gate.Serialize());
+            model.Save(modelPath);
         }
 
         public static ThresholdSettings TrainThreshold(IReadOnlyList<Recording> training, PhaseMap map, WalkingGate gate)

@@ -41,6 +41,17 @@ namespace HeadGait
                 throw new ModelFormatException(model.Source, e.Message);
             }
             Segments = new StrideSegments(PhaseMap);
+            if (model.Values.TryGetValue(WalkingGate.ModelKey, out string gateText))
+            {
+                try
+                {
+                    Gate = WalkingGate.Parse(gateText);
+                }
+                catch (FormatException e)
+                {
+                    throw new ModelFormatException(model.Source, e.Message);
+                }
+            }
             string classes = model.Need("classes");
             if (classes != Segments.Names())
                 throw new ModelFormatException(model.Source, $"classes '{classes}' do not match its phase map's stride segments '{Segments.Names()}'");
@@ -116,27 +127,42 @@ namespace HeadGait
             return scores;
         }
 
+        /// <summary>
+        /// Keeps out what clearly is not walking (gesturing, bowing): a window the gate refuses counts as standing whatever
+        /// the model scores. Read from the model file's <see cref="WalkingGate.ModelKey"/> (<c>headgait train</c> writes it);
+        /// null, as for a model file without one, lets every window through.
+        /// </summary>
+        public WalkingGate Gate { get; set; }
+
         public GaitPrediction Classify(SignalWindow window)
         {
             evaluator.Evaluate(Standardise(window), 1, scores);
-            return Decide(window.EndTime, window.SampleRate);
+            return Decide(window.EndTime, window.SampleRate, GateRefuses(window));
         }
+
+        /// <summary>True when <see cref="Gate"/> refuses the window as walking.</summary>
+        public bool GateRefuses(SignalWindow window) => Gate != null && !Gate.Passes(window);
 
         /// <summary>
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
         /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next.
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate)
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, bool gateRefused = false)
         {
             Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
-            return Decide(endTime, sampleRate);
+            return Decide(endTime, sampleRate, gateRefused);
         }
 
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate)
+        GaitPrediction Decide(double now, double sampleRate, bool gateRefused)
         {
             ToProbabilities(scores, probabilities);
+            if (gateRefused)
+            {
+                Array.Clear(probabilities, 0, probabilities.Length);
+                probabilities[Segments.StandingClass] = 1;
+            }
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
             lastTime = now;
             var p = probabilities;
