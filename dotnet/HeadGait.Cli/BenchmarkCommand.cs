@@ -35,7 +35,7 @@ namespace HeadGait.Cli
 
         static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv)
         {
-            var perRecordingRows = new List<(string scheme, string fold, ReplayResult result)>();
+            var perRecordingRows = new List<RecordingScoresCsv.Row>();
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
@@ -78,7 +78,7 @@ namespace HeadGait.Cli
                         var results = test.Select(r => ReplayEvaluator.Run(r, WithGate(foldModels.Create(name, out _), learnedGate))).ToList();
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
-                        perRecordingRows.AddRange(results.Select(r => (scheme, fold.Name, r)));
+                        perRecordingRows.AddRange(results.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Result = r }));
                         foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
                             pooledPose[name].Add(ReplayEvaluator.Run(p, WithGate(foldModels.Create(name, out _), learnedGate)));
                     }
@@ -116,7 +116,7 @@ namespace HeadGait.Cli
             }
             if (perRecordingCsv != null)
             {
-                Report.WriteRecordingsCsv(perRecordingCsv, perRecordingRows);
+                AtomicFile.WriteText(perRecordingCsv, w => RecordingScoresCsv.Write(w, perRecordingRows));
                 Console.WriteLine($"\nPer-recording scores: {perRecordingCsv}");
             }
             Console.WriteLine();

@@ -74,21 +74,6 @@ namespace HeadGait.Cli
             Console.WriteLine("recall/prec% = true contacts found / predicted contacts that are real; foot% = matched steps on the right foot; walk>st = walking shown as standing, st>walk = standing shown as walking.");
         }
 
-        /// <summary>One row per held-out recording, classifier and output (classifier or avatar), written atomically.</summary>
-        public static void WriteRecordingsCsv(string path, IEnumerable<(string scheme, string fold, ReplayResult result)> rows)
-        {
-            var sb = new System.Text.StringBuilder("scheme,fold,recording,classifier,output,samples,miscl,adjacent,walking_samples,walk_as_standing,standing_samples,standing_as_walking,true_steps,predicted_steps,matched_steps,right_foot\n");
-            foreach (var (scheme, fold, r) in rows)
-                foreach (var (output, m) in new[] { ("clf", r.ClassifierMetrics), ("avatar", r.AnimatorMetrics) })
-                {
-                    if (m == null) continue;
-                    sb.AppendLine(string.Join(",", scheme, fold, r.Recording, r.Classifier, output, m.Comparisons / 2,
-                        F(m.MisclassificationRate, "F4"), F(m.MisclassificationBeyondAdjacent, "F4"), m.WalkingSamples, F(m.WalkingAsStanding, "F4"),
-                        m.StandingSamples, F(m.StandingAsWalking, "F4"), m.TrueSteps, m.PredictedSteps, m.MatchedSteps, F(m.StepRightFoot, "F4")));
-                }
-            AtomicFile.WriteText(path, w => w.Write(sb.ToString()));
-        }
-
         static string Trim(string s, int n) => s.Length <= n ? s : s.Substring(0, n);
     }
 }

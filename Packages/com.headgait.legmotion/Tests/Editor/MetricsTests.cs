@@ -90,5 +90,34 @@ namespace HeadGait.Tests
             var a = new List<GaitPhase> { GaitPhase.Standing };
             Assert.That(() => GaitMetrics.Compute(new List<double> { 0, 1 }, a, a, a, a), Throws.ArgumentException);
         }
+
+        [Test]
+        public void PerRecordingScoresCarryEachReplaysMetricsOneRowPerOutput()
+        {
+            var walk = TestData.Eval("start_stop");
+            var odd = new Recording("walk, \"quoted\"", walk.Samples);
+            var results = new List<ReplayResult>
+            {
+                ReplayEvaluator.Run(walk, new ThresholdClassifier(TestData.Threshold)),
+                ReplayEvaluator.Run(odd, new CorrelationClassifier(TestData.Template)),
+            };
+            var writer = new System.IO.StringWriter();
+            RecordingScoresCsv.Write(writer, results.ConvertAll(r => new RecordingScoresCsv.Row { Scheme = "style", Fold = "bn/act", Result = r }));
+            var lines = writer.ToString().TrimEnd('\n', '\r').Split('\n');
+            Assert.That(lines[0].TrimEnd('\r'), Is.EqualTo(RecordingScoresCsv.Header));
+            Assert.That(lines.Length, Is.EqualTo(5), "header, then classifier and avatar rows per replay");
+
+            var header = new List<string>(RecordingScoresCsv.Header.Split(','));
+            var thrAvatar = lines[2].TrimEnd('\r').Split(',');
+            var m = results[0].AnimatorMetrics;
+            Assert.That(thrAvatar[header.IndexOf("recording")], Is.EqualTo("start_stop"));
+            Assert.That(thrAvatar[header.IndexOf("classifier")], Is.EqualTo("THR"));
+            Assert.That(thrAvatar[header.IndexOf("output")], Is.EqualTo("avatar"));
+            Assert.That(double.Parse(thrAvatar[header.IndexOf("miscl")], System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(m.MisclassificationRate).Within(1e-6));
+            Assert.That(double.Parse(thrAvatar[header.IndexOf("standing_as_walking")], System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(m.StandingAsWalking).Within(1e-6));
+            Assert.That(int.Parse(thrAvatar[header.IndexOf("true_steps")]), Is.EqualTo(m.TrueSteps).And.GreaterThan(5));
+            Assert.That(int.Parse(thrAvatar[header.IndexOf("predicted_steps")]), Is.EqualTo(m.PredictedSteps));
+            Assert.That(lines[3], Does.StartWith("style,bn/act,\"walk, \"\"quoted\"\"\",COR,clf,"), "a name with a comma or quote is quoted");
+        }
     }
 }

@@ -1,0 +1,55 @@
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+
+namespace HeadGait
+{
+    /// <summary>
+    /// One CSV row per scored recording, classifier and output (classifier or avatar): which recordings fail, and how.
+    /// Written by <c>headgait benchmark --per-recording</c>; shares are fractions (0..1), counts are samples or steps.
+    /// </summary>
+    public static class RecordingScoresCsv
+    {
+        public const string Header = "scheme,fold,recording,classifier,output,samples,miscl,beyond_adjacent,walking_samples,walking_as_standing,standing_samples,standing_as_walking,true_steps,predicted_steps,matched_steps,right_foot";
+
+        /// <summary>A held-out recording's replay and the cross-validation fold that held it out.</summary>
+        public struct Row
+        {
+            public string Scheme, Fold;
+            public ReplayResult Result;
+        }
+
+        public static void Write(TextWriter writer, IEnumerable<Row> rows)
+        {
+            writer.WriteLine(Header);
+            foreach (var row in rows)
+            {
+                var r = row.Result;
+                WriteLine(writer, row, "clf", r.ClassifierMetrics);
+                WriteLine(writer, row, "avatar", r.AnimatorMetrics);
+            }
+        }
+
+        static void WriteLine(TextWriter w, Row row, string output, GaitMetrics m)
+        {
+            if (m == null) return;
+            var r = row.Result;
+            w.WriteLine(string.Join(",", Field(row.Scheme), Field(row.Fold), Field(r.Recording), Field(r.Classifier), output,
+                (m.Comparisons / 2).ToString(CultureInfo.InvariantCulture), Share(m.MisclassificationRate), Share(m.MisclassificationBeyondAdjacent),
+                m.WalkingSamples.ToString(CultureInfo.InvariantCulture), Share(m.WalkingAsStanding),
+                m.StandingSamples.ToString(CultureInfo.InvariantCulture), Share(m.StandingAsWalking),
+                m.TrueSteps.ToString(CultureInfo.InvariantCulture), m.PredictedSteps.ToString(CultureInfo.InvariantCulture),
+                m.MatchedSteps.ToString(CultureInfo.InvariantCulture), Share(m.StepRightFoot)));
+        }
+
+        // Empty where there is nothing to divide by (no standing in a walking clip), so no one averages a NaN.
+        static string Share(double v) => double.IsNaN(v) ? "" : v.ToString("0.######", CultureInfo.InvariantCulture);
+
+        // Recording names come from file names: quote any that would break the row.
+        static string Field(string s)
+        {
+            s = s ?? "";
+            return s.IndexOfAny(new[] { ',', '"', '\n', '\r' }) < 0 ? s : "\"" + s.Replace("\"", "\"\"") + "\"";
+        }
+    }
+}
