@@ -48,7 +48,12 @@ namespace HeadGait
         /// <summary>Crossings count only while the head moves like walking (learned; open by default).</summary>
         public WalkingGate Gate = WalkingGate.Open;
 
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 2 };
+        /// <summary>
+        /// One contact starts walking. Waiting for a second (as before) kept a little more waving out (leave-one-style-out:
+        /// standing shown as walking 2.5 against 4.9 %, hand and head gestures 0.0 against 0.9 %) but showed 16 % of walking
+        /// as standing, a second late at every start: step recall 88.5 against 97.0 %, misclassification 42.6 against 40.9 %.
+        /// </summary>
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1 };
 
         public ThresholdSettings Clone()
         {
@@ -108,7 +113,7 @@ namespace HeadGait
     /// THR: an initial contact is detected when SMV minus gravity rises through a threshold (the larger of a floor and a
     /// fraction of the recent step peaks), dated back by the learned detection lag; the side comes from the lateral
     /// acceleration just before it, relative to the window's mean. A <see cref="StepClock"/> turns the contacts into a
-    /// stride position; two contacts at step-like intervals start walking. Allocation-free per window.
+    /// stride position; a contact while the walking gate is open starts walking. Allocation-free per window.
     /// </summary>
     public sealed class ThresholdClassifier : IGaitClassifier
     {
@@ -240,7 +245,7 @@ namespace HeadGait
             }
             if (peaks.Count < 8) return s;
             peaks.Sort();
-            // Half the peak of the quietest 2 % of (augmented) steps: calm walkers cross it; the gate and the second contact keep gestures out.
+            // Half the peak of the quietest 2 % of (augmented) steps: calm walkers cross it; the gate keeps gestures out.
             s.Floor = Math.Max(0.3, 0.5 * peaks[(int)(0.02 * (peaks.Count - 1))]);
             // Lag from a replay with the learned floor; then the lateral profile around true contacts, shifted by that lag.
             var lags = new List<double>();
