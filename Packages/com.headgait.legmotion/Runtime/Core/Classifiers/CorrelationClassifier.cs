@@ -18,6 +18,16 @@ namespace HeadGait
         /// </summary>
         public int PeakConfirmSamples = 5;
 
+        /// <summary>
+        /// While walking, a peak this much below the threshold still counts when it comes when the next step is due
+        /// (<see cref="DueFrom"/> to <see cref="DueUntil"/> step periods after the last contact). A walker's step that
+        /// matches a little worse than usual was otherwise missed, the clock ran out and restarted at a guessed phase.
+        /// Leave-one-style-out: 0.1 lowered misclassification from 27.4 to 26.5 %; 0.2 helped less (27.3 %).
+        /// </summary>
+        public double TrackingMargin = 0.1;
+
+        public double DueFrom = 0.75, DueUntil = 1.5;
+
         /// <summary>Overrides the template's correlation threshold when set (e.g. the paper's 0.9); NaN keeps the template's.</summary>
         public double MinCorrelationOverride = double.NaN;
 
@@ -200,7 +210,7 @@ namespace HeadGait
             LastCorrelation = best;
             // The step that just ended was a left step when the lateral matches the left-step template: the foot landing now is the right one.
             double evidence = 0;
-            if (bestIndex >= 0 && best >= minCorrelation)
+            if (bestIndex >= 0 && best >= minCorrelation - settings.TrackingMargin)
             {
                 var lateral = lateralCurves[bestTemplate][bestIndex];
                 evidence = -Correlation(window.Lateral, n - lateral.Length, lateral, lateral.Length, true);
@@ -210,11 +220,13 @@ namespace HeadGait
             {
                 int centre = settings.PeakConfirmSamples;
                 double r = recentR[centre];
-                bool peak = r >= minCorrelation;
-                for (int i = 0; peak && i < recentR.Length; i++)
-                    if (i != centre && (recentR[i] > r || (recentR[i] == r && i < centre))) peak = false;
                 int t = recentTemplate[centre];
                 double contact = recentTime[centre] - template.Templates[t].ContactLag;
+                double since = contact - clock.LastContactTime;
+                bool due = clock.IsWalking(now) && since >= settings.DueFrom * clock.StepPeriod && since <= settings.DueUntil * clock.StepPeriod;
+                bool peak = r >= (due ? minCorrelation - settings.TrackingMargin : minCorrelation);
+                for (int i = 0; peak && i < recentR.Length; i++)
+                    if (i != centre && (recentR[i] > r || (recentR[i] == r && i < centre))) peak = false;
                 if (peak && clock.Contact(contact, recentEvidence[centre]))
                     ContactDetected?.Invoke(contact, recentEvidence[centre], r, t);
             }
