@@ -24,24 +24,29 @@ namespace HeadGait.Tests
             Assert.That(ReferenceCheck.MaxDifference(model, reference), Is.LessThanOrEqualTo(1e-5));
         }
 
-        [Test]
-        public void AClassThatFlickersBackIsHeldSoNoFootLandsTwice()
+        /// <summary>
+        /// Confident scores for strides of segments, each as long as its share of a 1.1 s stride; in the middle of every
+        /// segment <paramref name="length"/> windows name the class <paramref name="flicker"/> segments further on instead.
+        /// </summary>
+        static (List<bool> following, int landings) Flickering(BlstmClassifier blstm, int flicker, int strides = 2, int shiftAfter = -1, int shift = 0, int length = 2)
         {
-            var blstm = new BlstmClassifier(GaitModels.Load(Models).Blstm);
             int n = blstm.Segments.Count, classes = blstm.Segments.ClassCount;
-            // Two strides of confident segment scores, each segment as long as its share of a 1.1 s stride, with a
-            // two-window flicker back to the previous segment in the middle of every segment.
             var sequence = new List<int>();
-            for (int stride = 0; stride < 2; stride++)
+            for (int stride = 0; stride < strides; stride++)
                 for (int k = 0; k < n; k++)
                 {
                     int windows = Math.Max(4, (int)Math.Round(blstm.Segments.Length(k) * 110));
-                    for (int w = 0; w < windows; w++) sequence.Add(w == windows / 2 || w == windows / 2 + 1 ? (k + n - 1) % n : k);
+                    for (int w = 0; w < windows; w++)
+                    {
+                        int c = w >= windows / 2 && w < windows / 2 + length ? (k + flicker + n) % n : k;
+                        if (shiftAfter >= 0 && sequence.Count >= shiftAfter) c = (c + shift) % n;
+                        sequence.Add(c);
+                    }
                 }
             var scores = new double[sequence.Count * classes];
             for (int i = 0; i < sequence.Count; i++)
                 for (int c = 0; c < classes; c++) scores[i * classes + c] = c == sequence[i] ? 0.97 : 0.03 / (classes - 1);
-
+            var following = new List<bool>();
             int landings = 0;
             GaitPhase previous = GaitPhase.Standing;
             for (int i = 0; i < sequence.Count; i++)
@@ -49,8 +54,34 @@ namespace HeadGait.Tests
                 var p = blstm.ClassifyScored(scores, i, 0.01 * i, 100);
                 if (GaitPhases.IsSwing(previous) && GaitPhases.IsStance(p.Left)) landings++;
                 previous = p.Left;
+                following.Add(p.Left == blstm.Segments.Left(sequence[i]) && p.Right == blstm.Segments.Right(sequence[i]));
             }
+            return (following, landings);
+        }
+
+        static BlstmClassifier Blstm(string models) => new BlstmClassifier(GaitModels.Load(models).Blstm);
+
+        [TestCase(-1, 2)]
+        [TestCase(-2, 4)]
+        [TestCase(8, 4)]
+        public void AClassThatFlickersBackOrAcrossTheStrideIsHeldSoNoFootLandsTwice(int flicker, int length)
+        {
+            var (_, landings) = Flickering(Blstm(Models), flicker, length: length);
             Assert.That(landings, Is.EqualTo(2), "the left foot lands once per stride, however the scores flicker");
+            var free = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { HoldBackSegments = 0, SwapSegments = 99 });
+            Assert.That(Flickering(free, flicker, length: length).landings, Is.GreaterThan(2), "without the holds the flicker lands the foot again");
+        }
+
+        [Test]
+        public void WhenTheFeetReallySwapTheShownClassFollowsWithinAFewSegments()
+        {
+            var blstm = Blstm(Models);
+            int n = blstm.Segments.Count;
+            // From window 150 on the model names the class half a stride on, for good.
+            var (following, landings) = Flickering(blstm, 0, strides: 3, shiftAfter: 150, shift: n / 2);
+            Assert.That(following.GetRange(following.Count - 100, 100), Is.All.True, "a stride later the legs show what the model says");
+            int firstFollowing = following.FindIndex(150, f => f);
+            Assert.That(firstFollowing - 150, Is.LessThan(30), "held for at most a few segments (0.3 s)");
         }
 
         [Test]

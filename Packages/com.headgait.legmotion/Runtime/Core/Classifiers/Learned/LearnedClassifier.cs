@@ -19,6 +19,7 @@ namespace HeadGait
         readonly double[] scores;
         readonly double[] probabilities;
         readonly PhaseSequenceFilter filter;
+        readonly PhaseFilterSettings filterSettings;
         readonly CSharpNetwork network;
         ILearnedEvaluator evaluator;
         int lastClass = -1;
@@ -64,6 +65,7 @@ namespace HeadGait
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];
             filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
+            this.filterSettings = filterSettings;
             stepPeriod = DefaultStepPeriod;
             network = new CSharpNetwork(this);
             evaluator = network;
@@ -179,13 +181,7 @@ namespace HeadGait
                     if (p[k] > p[best]) best = k;
             }
             if (filter != null && lastClass >= 0 && lastClass != Segments.StandingClass && best != Segments.StandingClass)
-            {
-                // Feet do not walk backwards: a class one or two segments behind the last is a flicker, and showing it would
-                // put a foot back into swing and land it a second time. Hold the last class until the model catches up
-                // (style CV: SVM step precision 81.5 to 89.9 %).
-                int back = (lastClass - best + Segments.Count) % Segments.Count;
-                if (back >= 1 && back <= 2) best = lastClass;
-            }
+                best = Steady(best);
             if (best == Segments.StandingClass)
             {
                 lastClass = best;
@@ -200,6 +196,19 @@ namespace HeadGait
             double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
             return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
+        }
+
+        /// <summary>
+        /// The class to show after <paramref name="best"/> while walking: the last one is held when best is a little behind
+        /// it or across the stride from it (<see cref="PhaseFilterSettings.HoldBackSegments"/>, <see cref="PhaseFilterSettings.SwapSegments"/>).
+        /// </summary>
+        int Steady(int best)
+        {
+            int n = Segments.Count;
+            int back = (lastClass - best + n) % n, ahead = (best - lastClass + n) % n;
+            bool behind = back >= 1 && back <= filterSettings.HoldBackSegments;
+            bool swapped = ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;
+            return behind || swapped ? lastClass : best;
         }
 
         /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>

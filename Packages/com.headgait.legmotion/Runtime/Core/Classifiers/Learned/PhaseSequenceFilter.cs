@@ -15,6 +15,22 @@ namespace HeadGait
 
         /// <summary>How much the model's evidence counts against the gait model (1 = as probabilities; lower trusts the sequence more).</summary>
         public double EvidenceWeight = 1.0;
+
+        /// <summary>
+        /// A filtered class this many segments or fewer behind the last one is held: feet do not walk backwards, and showing
+        /// it would put a foot back into swing and land it a second time (style CV: SVM step precision 81.5 to 89.9 %).
+        /// </summary>
+        public int HoldBackSegments = 2;
+
+        /// <summary>
+        /// A class at least this many segments away either way (the feet swapped: half a stride is 8 of the 16 segments)
+        /// is held as well. A real change of phase does not jump across the stride within one window; the model's class
+        /// moves on while the last is held, and within a few segments it is near enough to follow. Style CV: step
+        /// precision SVM 89.9 to 95.4 %, BLSTM 94.8 to 96.9 %, right foot 96.8 to 97.6 % and 98.4 to 98.9 %; recall
+        /// 97.1 to 96.6 % and 96.0 to 96.1 %; misclassification 21.7 to 22.0 % and 17.8 to 17.9 %. From 5 segments on,
+        /// recall fell under 96 % and misclassification rose by 0.5 point.
+        /// </summary>
+        public int SwapSegments = 6;
     }
 
     /// <summary>
