@@ -39,6 +39,7 @@ namespace HeadGait.Tests
             Assert.That(c, Is.TypeOf(expected));
             Assert.That(error, Is.Null);
             Assert.That(warning, Is.Null);
+            if (c is LearnedClassifier learned) Assert.That(learned.Gate, Is.Not.Null, "the walking gate comes with the model asset");
         }
 
         static ModelAsset Truncated(string file)
