@@ -59,11 +59,10 @@ namespace HeadGait.Cli
                     var map = PhaseMapTraining.Learn(train);
                     var augmented = GaitTraining.WithAugmentation(train, augment);
                     var foldModels = new GaitModels();
-                    var gate = names.Contains("thr") || names.Contains("cor") ? GaitTraining.TrainGate(augmented) : null;
-                    // The learned classifiers' gate, trained on the fold's training recordings as `headgait train` does.
-                    var learnedGate = names.Any(n => n.StartsWith("svm") || n.StartsWith("blstm")) ? GaitTraining.TrainLearnedGate(augmented) : null;
-                    if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gate);
-                    if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gate);
+                    // Every classifier's walking gate, trained on the fold's training recordings as `headgait train` does.
+                    var gates = GaitTraining.TrainGates(augmented);
+                    if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Detectors);
+                    if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Detectors);
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
                     foldModels.Svm = learned?.Svm;
@@ -75,12 +74,12 @@ namespace HeadGait.Cli
                             missing.Add($"{name} {fold.Name}");
                             continue;
                         }
-                        var results = test.Select(r => ReplayEvaluator.Run(r, WithGate(foldModels.Create(name, out _), learnedGate))).ToList();
+                        var results = test.Select(r => ReplayEvaluator.Run(r, WithGate(foldModels.Create(name, out _), gates.Learned))).ToList();
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
                         perRecordingRows.AddRange(results.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Result = r }));
                         foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
-                            pooledPose[name].Add(ReplayEvaluator.Run(p, WithGate(foldModels.Create(name, out _), learnedGate)));
+                            pooledPose[name].Add(ReplayEvaluator.Run(p, WithGate(foldModels.Create(name, out _), gates.Learned)));
                     }
                 }
                 Console.WriteLine();

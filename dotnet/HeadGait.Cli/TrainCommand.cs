@@ -52,9 +52,10 @@ namespace HeadGait.Cli
                 Console.WriteLine($"{recordings.Count} labelled recordings, {training.Count - recordings.Count} augmented copies; phase map {map.Serialize()}");
                 bool onlyFolds = parse.GetValue(cvOnly);
                 if (onlyFolds && string.IsNullOrWhiteSpace(parse.GetValue(cv))) throw new UsageException("--cv-only needs --cv");
+                var gates = onlyFolds ? default : GaitTraining.TrainGates(training);
                 if (!onlyFolds)
                 {
-                    var gate = GaitTraining.TrainGate(training);
+                    var gate = gates.Detectors;
                     var thr = GaitTraining.TrainThreshold(training, map, gate);
                     thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
                     Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g; bias): {gate.Serialize()}");
@@ -67,7 +68,7 @@ namespace HeadGait.Cli
                 string kinds = parse.GetValue(learned);
                 if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase))
                 {
-                    if (!onlyFolds) WriteLearnedGate(outDir, training);
+                    if (!onlyFolds) WriteLearnedGate(outDir, gates.Learned);
                     return 0;
                 }
                 string workDir = parse.GetValue(work) ?? Path.Combine(Path.GetTempPath(), "headgait-train-windows");
@@ -86,7 +87,7 @@ namespace HeadGait.Cli
                 {
                     RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{outDir}\" --models {kinds} {extra}");
                     Verify(outDir);
-                    WriteLearnedGate(outDir, training);
+                    WriteLearnedGate(outDir, gates.Learned);
                 }
                 foreach (var scheme in (parse.GetValue(cv) ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
                 {
@@ -165,11 +166,10 @@ namespace HeadGait.Cli
         }
 
         /// <summary>The SVM's and BLSTM's walking gate, trained on the same (augmented) recordings, into whichever of their files the folder holds.</summary>
-        static void WriteLearnedGate(string folder, IReadOnlyList<Recording> training)
+        static void WriteLearnedGate(string folder, WalkingGate gate)
         {
             var files = new[] { GaitModels.SvmFile, GaitModels.BlstmFile }.Select(f => Path.Combine(folder, f)).Where(File.Exists).ToList();
             if (files.Count == 0) return;
-            var gate = GaitTraining.TrainLearnedGate(training);
             foreach (var path in files) GaitTraining.WriteGate(path, gate);
             Console.WriteLine(gate == null
                 ? $"no standing in the recordings: {string.Join(", ", files.Select(Path.GetFileName))} run without a walking gate"

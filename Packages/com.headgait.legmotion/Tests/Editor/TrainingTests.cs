@@ -7,6 +7,21 @@ using NUnit.Framework;
 
 namespace HeadGait.Tests
 {
+    public class WalkingGateTrainingTests
+    {
+        [Test]
+        public void OneFitGivesEachClassifiersGateAsItsOwnTrainingWould()
+        {
+            var training = TestData.Training;
+            var gates = GaitTraining.TrainGates(training);
+            Assert.That(gates.Detectors.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.DetectorPass).Weights));
+            Assert.That(gates.Learned.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.LearnedPass).Weights));
+            // Same regression, a bias letting more walking through.
+            for (int i = 0; i < WalkingGate.FeatureCount; i++) Assert.That(gates.Learned.Weights[i], Is.EqualTo(gates.Detectors.Weights[i]));
+            Assert.That(gates.Learned.Weights[WalkingGate.FeatureCount], Is.GreaterThan(gates.Detectors.Weights[WalkingGate.FeatureCount]));
+        }
+    }
+
     public class StrideSegmentTests
     {
         [Test]

@@ -122,6 +122,14 @@ namespace HeadGait
         /// Throws <see cref="InvalidOperationException"/> without both classes.
         /// </summary>
         public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = DetectorPass)
+            => TrainEach(recordings, new[] { walkingPass })[0];
+
+        /// <summary>
+        /// One gate per share in <paramref name="walkingPasses"/>, from one fit: the gates differ only in their bias, so the
+        /// classifiers that pass different shares of walking (<see cref="DetectorPass"/>, <see cref="LearnedPass"/>) need the
+        /// windows read and the regression solved once.
+        /// </summary>
+        public static WalkingGate[] TrainEach(IEnumerable<Recording> recordings, IReadOnlyList<double> walkingPasses)
         {
             var walking = new List<double[]>();
             var standing = new List<double[]>();
@@ -156,8 +164,13 @@ namespace HeadGait
                 scores.Add(z);
             }
             scores.Sort();
-            w8[FeatureCount] = -scores[(int)Math.Floor((1 - walkingPass) * (scores.Count - 1))] + 1e-9;
-            return new WalkingGate(w8);
+            var gates = new WalkingGate[walkingPasses.Count];
+            for (int g = 0; g < gates.Length; g++)
+            {
+                w8[FeatureCount] = -scores[(int)Math.Floor((1 - walkingPasses[g]) * (scores.Count - 1))] + 1e-9;
+                gates[g] = new WalkingGate(w8); // copies the weights
+            }
+            return gates;
         }
 
         /// <summary>Balanced logistic regression by Newton's method (a 6x6 system), with a small ridge for stability.</summary>

@@ -25,21 +25,23 @@ namespace HeadGait.Training
         }
 
         /// <summary>The walking gate THR and COR share; open when the recordings hold no standing to learn from.</summary>
-        public static WalkingGate TrainGate(IReadOnlyList<Recording> training) => TrainLearnedGate(training, WalkingGate.DetectorPass) ?? WalkingGate.Open;
+        public static WalkingGate TrainGate(IReadOnlyList<Recording> training) => TrainGates(training).Detectors;
 
         /// <summary>
-        /// The walking gate of the SVM and BLSTM (<see cref="WalkingGate.LearnedPass"/> unless given); null when the
-        /// recordings hold no standing to learn from (the models then run ungated).
+        /// From one fit, THR's and COR's walking gate (<see cref="WalkingGate.DetectorPass"/>; open when the recordings hold
+        /// no standing to learn from) and the SVM's and BLSTM's (<see cref="WalkingGate.LearnedPass"/>; null then: the models
+        /// run ungated).
         /// </summary>
-        public static WalkingGate TrainLearnedGate(IReadOnlyList<Recording> training, double walkingPass = WalkingGate.LearnedPass)
+        public static (WalkingGate Detectors, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training)
         {
             try
             {
-                return WalkingGate.Train(training, walkingPass);
+                var gates = WalkingGate.TrainEach(training, new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass });
+                return (gates[0], gates[1]);
             }
             catch (System.InvalidOperationException)
             {
-                return null;
+                return (WalkingGate.Open, null);
             }
         }
 
