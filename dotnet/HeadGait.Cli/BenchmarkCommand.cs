@@ -74,12 +74,12 @@ namespace HeadGait.Cli
                             missing.Add($"{name} {fold.Name}");
                             continue;
                         }
-                        var results = test.Select(r => ReplayEvaluator.Run(r, WithGate(foldModels.Create(name, out _), gates.Learned))).ToList();
+                        var results = test.Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
                         perRecordingRows.AddRange(results.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Result = r }));
                         foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
-                            pooledPose[name].Add(ReplayEvaluator.Run(p, WithGate(foldModels.Create(name, out _), gates.Learned)));
+                            pooledPose[name].Add(ReplayEvaluator.Run(p, InFold(foldModels.Create(name, out _), gates.Learned, map)));
                     }
                 }
                 Console.WriteLine();
@@ -125,10 +125,14 @@ namespace HeadGait.Cli
             return 0;
         }
 
-        /// <summary>A learned classifier with the fold's own gate (fold models may predate the gate or hold one from other data).</summary>
-        static IGaitClassifier WithGate(IGaitClassifier c, WalkingGate gate)
+        /// <summary>A learned classifier with the fold's own gate and stance slope (fold models may predate them or hold ones from other data).</summary>
+        static IGaitClassifier InFold(IGaitClassifier c, WalkingGate gate, PhaseMap map)
         {
-            if (c is LearnedClassifier learned) learned.Gate = gate;
+            if (c is LearnedClassifier learned)
+            {
+                learned.Gate = gate;
+                learned.AdoptStance(map);
+            }
             return c;
         }
 

@@ -76,5 +76,60 @@ namespace HeadGait.Tests
             Assert.That(() => new PhaseMap(new[] { 0.0, 0.5 }), Throws.ArgumentException);
             Assert.That(() => PhaseMap.Parse("0,0.1;0.5"), Throws.TypeOf<System.FormatException>());
         }
+
+        static PhaseMap PeriodDependent => PhaseMap.FromStanceFraction(0.58, 0.5, stanceSlope: 0.12, referenceStridePeriod: 1.1);
+
+        [Test]
+        public void StanceLengthensWithTheStridePeriodWithinItsLimit()
+        {
+            var m = PeriodDependent;
+            Assert.That(m.StanceShare(0.55), Is.EqualTo(0.58).Within(1e-12), "at the reference period");
+            Assert.That(m.StanceShare(0.65), Is.EqualTo(0.58 + 0.12 * 0.2).Within(1e-12), "0.2 s longer stride");
+            Assert.That(m.StanceShare(0.40), Is.EqualTo(0.58 - 0.12 * 0.3).Within(1e-12));
+            Assert.That(m.StanceShare(3.0), Is.EqualTo(0.58 + PhaseMap.MaxStanceShift).Within(1e-12), "held to its limit");
+            Assert.That(m.StanceShare(0), Is.EqualTo(0.58), "no period: the reference share");
+            // At 0.6 of its cycle a foot is still in pre-swing on a slow stride and already swinging on a fast one.
+            Assert.That(m.PhaseAt(Foot.Left, 0.60, 0.70), Is.EqualTo(GaitPhase.PreSwing));
+            Assert.That(m.PhaseAt(Foot.Left, 0.60, 0.45), Is.EqualTo(GaitPhase.InitialSwing));
+            Assert.That(m.PhaseAt(Foot.Right, 0.10, 0.70), Is.EqualTo(GaitPhase.PreSwing));
+            // Contact stays at the cycle's start and the fixed-share reading is the reference map's.
+            Assert.That(m.PhaseAt(Foot.Left, 0.001, 0.45), Is.EqualTo(GaitPhase.InitialContact));
+            Assert.That(m.PhaseAt(Foot.Left, 0.60), Is.EqualTo(PhaseMap.FromStanceFraction(0.58).PhaseAt(Foot.Left, 0.60)));
+        }
+
+        [Test]
+        public void SerializesTheStanceSlopeAndReadsMapsWithout()
+        {
+            var back = PhaseMap.Parse(PeriodDependent.Serialize());
+            Assert.That(back.StanceSlope, Is.EqualTo(0.12));
+            Assert.That(back.ReferenceStridePeriod, Is.EqualTo(1.1));
+            Assert.That(back.StanceShare(0.65), Is.EqualTo(PeriodDependent.StanceShare(0.65)));
+            var fixedShare = PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5");
+            Assert.That(fixedShare.StanceSlope, Is.EqualTo(0));
+            Assert.That(fixedShare.Serialize(), Is.EqualTo("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5"), "a fixed map keeps the two-part text");
+            Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;0.1"), Throws.TypeOf<System.FormatException>());
+            Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;NaN,1.1"), Throws.TypeOf<System.FormatException>());
+            Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;0.1,0"), Throws.TypeOf<System.FormatException>());
+        }
+
+        [Test]
+        public void ALatchedFootDoesNotFallBackIntoStanceWhenThePeriodGrows()
+        {
+            var m = PeriodDependent;
+            var latch = new StanceLatch();
+            // The left foot lands on a fast stride and has just lifted (cycle 0.57) when the right foot's contact
+            // lengthens the period: read afresh it would be back in pre-swing.
+            double fast = 0.50, slow = 0.64;
+            for (double s = 0; s < 0.57; s += 0.01) latch.PhaseAt(m, Foot.Left, s, fast);
+            Assert.That(latch.PhaseAt(m, Foot.Left, 0.57, fast), Is.EqualTo(GaitPhase.InitialSwing));
+            Assert.That(m.PhaseAt(Foot.Left, 0.58, slow), Is.EqualTo(GaitPhase.PreSwing), "what an unlatched reading shows");
+            Assert.That(latch.PhaseAt(m, Foot.Left, 0.58, slow), Is.EqualTo(GaitPhase.InitialSwing));
+            // At its next contact the foot takes the new period's longer stance.
+            for (double s = 0.6; s < 1.0; s += 0.01) latch.PhaseAt(m, Foot.Left, s, slow);
+            for (double s = 0.0; s < 0.58; s += 0.01) latch.PhaseAt(m, Foot.Left, s, slow);
+            Assert.That(latch.PhaseAt(m, Foot.Left, 0.58, slow), Is.EqualTo(GaitPhase.PreSwing));
+            latch.Reset();
+            Assert.That(latch.PhaseAt(m, Foot.Left, 0.58, fast), Is.EqualTo(GaitPhase.InitialSwing), "after a reset the period as it is");
+        }
     }
 }

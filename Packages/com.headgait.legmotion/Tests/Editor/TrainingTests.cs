@@ -180,6 +180,29 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void StanceFollowsTheStridePeriodOfTheTrainingWalkers()
+        {
+            // Two walkers: a slow one with a long stance and a fast one with a short stance. The learned share must rise
+            // with the period by their difference over the period difference, and sit between them at the mean period.
+            var slow = GaitSubject.Random(3, "slow");
+            slow.StepFrequency = 1.6;
+            slow.StanceFraction = 0.64;
+            var fast = GaitSubject.Random(4, "fast");
+            fast.StepFrequency = 2.1;
+            fast.StanceFraction = 0.58;
+            var recordings = new[]
+            {
+                WalkingStreamGenerator.Generate("slow", slow, new StreamScript().Stand(1).Walk(40, Foot.Left).Stand(1), 5),
+                WalkingStreamGenerator.Generate("fast", fast, new StreamScript().Stand(1).Walk(40, Foot.Left).Stand(1), 6),
+            };
+            var map = PhaseMapTraining.Learn(recordings);
+            double expected = (0.64 - 0.58) / (2 / 1.6 - 2 / 2.1);
+            Assert.That(map.StanceSlope, Is.EqualTo(expected).Within(0.25 * expected));
+            Assert.That(map.StanceShare(1 / 1.6), Is.EqualTo(0.64).Within(0.015));
+            Assert.That(map.StanceShare(1 / 2.1), Is.EqualTo(0.58).Within(0.015));
+        }
+
+        [Test]
         public void WithoutWalkingItKeepsPerrysMap()
         {
             var standing = WalkingStreamGenerator.Generate("s", GaitSubject.Random(1), new StreamScript().Stand(10), 1);

@@ -97,6 +97,7 @@ namespace HeadGait
     {
         readonly AnimatorSettings settings;
         readonly PhaseMap map;
+        readonly StanceLatch stance = new StanceLatch();
         readonly List<GaitPrediction> history = new List<GaitPrediction>();
 
         LocomotionState state = LocomotionState.Standing;
@@ -136,6 +137,7 @@ namespace HeadGait
             blendRemaining = 0;
             blendTimeLeft = 0;
             settling = false;
+            stance.Reset();
         }
 
         static bool BelievesWalking(LocomotionState st)
@@ -264,7 +266,10 @@ namespace HeadGait
         AnimatorFrame Frame(double time, bool resync)
         {
             if (state == LocomotionState.Standing)
+            {
+                stance.Reset();
                 return new AnimatorFrame(time, state, s, GaitPhase.Standing, GaitPhase.Standing, 0, stepPeriod, resync);
+            }
             double weight = 1;
             if (settling)
             {
@@ -278,7 +283,7 @@ namespace HeadGait
                 bool starting = state == LocomotionState.StartWalkLeft || state == LocomotionState.StartWalkRight;
                 weight = starting ? done : 1 - done;
             }
-            return new AnimatorFrame(time, state, s, map.PhaseAt(Foot.Left, s), map.PhaseAt(Foot.Right, s), weight, stepPeriod, resync);
+            return new AnimatorFrame(time, state, s, stance.PhaseAt(map, Foot.Left, s, stepPeriod), stance.PhaseAt(map, Foot.Right, s, stepPeriod), weight, stepPeriod, resync);
         }
 
         void Enter(LocomotionState next, double target)

@@ -33,7 +33,7 @@ namespace HeadGait
         public static GaitPrediction Walking(double time, double stridePosition, double stepPeriod, double confidence, PhaseMap map)
         {
             double s = PhaseMap.Wrap(stridePosition);
-            return new GaitPrediction(time, true, s, stepPeriod, confidence, map.PhaseAt(Foot.Left, s), map.PhaseAt(Foot.Right, s));
+            return new GaitPrediction(time, true, s, stepPeriod, confidence, map.PhaseAt(Foot.Left, s, stepPeriod), map.PhaseAt(Foot.Right, s, stepPeriod));
         }
 
         /// <summary>Walking with the feet's phases given by the classifier (they must agree with the stride position under its map).</summary>

@@ -59,6 +59,7 @@ namespace HeadGait
     {
         readonly StepClockSettings settings;
         readonly PhaseMap map;
+        readonly StanceLatch stance = new StanceLatch();
         double lastContact;
         double period;
         double sideEvidence;
@@ -86,6 +87,7 @@ namespace HeadGait
             contactsInBout = 0;
             lastFoot = Foot.Left;
             reported = double.NaN;
+            stance.Reset();
         }
 
         /// <summary>
@@ -146,6 +148,7 @@ namespace HeadGait
             if (!IsWalking(now))
             {
                 reported = double.NaN;
+                stance.Reset();
                 return GaitPrediction.Standing(now, confidence);
             }
             double s = StridePosition(now);
@@ -155,7 +158,8 @@ namespace HeadGait
                 if (back > 0 && back < settings.HoldBack) s = reported;
             }
             reported = s;
-            return GaitPrediction.Walking(now, s, period, confidence, map);
+            return GaitPrediction.Walking(now, s, period, confidence,
+                stance.PhaseAt(map, Foot.Left, s, period), stance.PhaseAt(map, Foot.Right, s, period));
         }
     }
 }

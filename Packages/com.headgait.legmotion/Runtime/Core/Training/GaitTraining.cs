@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using HeadGait.Synthetic;
 
@@ -46,14 +47,35 @@ namespace HeadGait.Training
         }
 
         /// <summary>
-        /// Writes the learned classifiers' gate into a trained SVM or BLSTM model file (or removes a stale one when
-        /// <paramref name="gate"/> is null); the network's tensors are left as they are.
+        /// Writes what C# learns for the learned classifiers into a trained SVM or BLSTM model file: the walking gate (or
+        /// removes a stale one when <paramref name="gate"/> is null) and the phase map's stance slope, when given (its onsets
+        /// must be the model's own, which define its classes). The network's tensors are left as they are.
         /// </summary>
-        public static void WriteGate(string modelPath, WalkingGate gate)
+        public static void WriteGate(string modelPath, WalkingGate gate, PhaseMap stance = null)
         {
             var model = ModelFile.Load(modelPath);
             if (gate == null) model.Values.Remove(WalkingGate.ModelKey);
             else model.Set(WalkingGate.ModelKey, gate.Serialize());
+            if (stance != null)
+            {
+                PhaseMap own;
+                try
+                {
+                    own = PhaseMap.Parse(model.Need("phase_map"));
+                }
+                catch (FormatException e)
+                {
+                    throw new ModelFormatException(model.Source, e.Message);
+                }
+                try
+                {
+                    model.Set("phase_map", own.WithStanceOf(stance).Serialize());
+                }
+                catch (ArgumentException e)
+                {
+                    throw new ModelFormatException(model.Source, $"was trained with other phase onsets; retrain it ({e.Message})");
+                }
+            }
             model.Save(modelPath);
         }
 

@@ -76,8 +76,19 @@ namespace HeadGait
 
         public abstract string Name { get; }
         public string Source { get; }
-        public PhaseMap PhaseMap { get; }
+        /// <summary>The model's phase map: its onsets define the classes; its stance slope shapes the avatar's phases.</summary>
+        public PhaseMap PhaseMap { get; private set; }
         public StrideSegments Segments { get; }
+
+        /// <summary>
+        /// Takes the stance slope of a map learned from other recordings (a cross-validation fold's; fold models may
+        /// predate the slope); the model's own onsets stay, since they define its classes.
+        /// </summary>
+        public void AdoptStance(PhaseMap map)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            PhaseMap = PhaseMap.WithStance(map.StanceSlope, map.ReferenceStridePeriod);
+        }
         public WindowFeatures Features { get; }
         public int WindowLength => Features.Samples;
 
