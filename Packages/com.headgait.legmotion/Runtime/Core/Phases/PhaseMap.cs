@@ -123,7 +123,8 @@ namespace HeadGait
             double reference = onsets[(int)GaitPhase.InitialSwing];
             if (StanceSlope == 0 || !(stepPeriod > 0)) return reference;
             double shift = StanceSlope * (2 * stepPeriod - ReferenceStridePeriod);
-            return reference + Math.Max(-MaxStanceShift, Math.Min(MaxStanceShift, shift));
+            // Both stance and swing keep some of the cycle whatever the map's own onsets.
+            return Math.Max(0.05, Math.Min(0.95, reference + Math.Max(-MaxStanceShift, Math.Min(MaxStanceShift, shift))));
         }
 
         /// <summary>The phase at a position in the foot's own cycle when stance takes <paramref name="stanceShare"/> of it.</summary>
