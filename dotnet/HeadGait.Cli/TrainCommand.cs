@@ -68,7 +68,7 @@ namespace HeadGait.Cli
                 string kinds = parse.GetValue(learned);
                 if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase))
                 {
-                    if (!onlyFolds) WriteLearnedGate(outDir, gates.Learned, map);
+                    if (!onlyFolds) WriteLearnedGateAndStance(outDir, gates.Learned, map);
                     return 0;
                 }
                 string workDir = parse.GetValue(work) ?? Path.Combine(Path.GetTempPath(), "headgait-train-windows");
@@ -87,7 +87,7 @@ namespace HeadGait.Cli
                 {
                     RunPython(py, $"\"{script}\" --data \"{workDir}\" --out \"{outDir}\" --models {kinds} {extra}");
                     Verify(outDir);
-                    WriteLearnedGate(outDir, gates.Learned, map);
+                    WriteLearnedGateAndStance(outDir, gates.Learned, map);
                 }
                 foreach (var scheme in (parse.GetValue(cv) ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
                 {
@@ -166,11 +166,11 @@ namespace HeadGait.Cli
         }
 
         /// <summary>The SVM's and BLSTM's walking gate and stance slope, learned from the same recordings, into whichever of their files the folder holds.</summary>
-        static void WriteLearnedGate(string folder, WalkingGate gate, PhaseMap map)
+        static void WriteLearnedGateAndStance(string folder, WalkingGate gate, PhaseMap map)
         {
             var files = new[] { GaitModels.SvmFile, GaitModels.BlstmFile }.Select(f => Path.Combine(folder, f)).Where(File.Exists).ToList();
             if (files.Count == 0) return;
-            foreach (var path in files) GaitTraining.WriteGate(path, gate, map);
+            foreach (var path in files) GaitTraining.WriteGateAndStance(path, gate, map);
             Console.WriteLine(gate == null
                 ? $"no standing in the recordings: {string.Join(", ", files.Select(Path.GetFileName))} run without a walking gate"
                 : $"walking gate of {string.Join(" and ", files.Select(Path.GetFileName))} ({100 * WalkingGate.LearnedPass:F1} % of walking windows pass): {gate.Serialize()}");

@@ -283,24 +283,24 @@ namespace HeadGait.Tests
                 var before = Scores();
 
                 var gate = new WalkingGate(new double[] { 1, 2, 3, 4, 5, 6, -7 });
-                GaitTraining.WriteGate(path, gate);
+                GaitTraining.WriteGateAndStance(path, gate);
                 var written = new BlstmClassifier(ModelFile.Load(path));
                 Assert.That(written.Gate.Weights, Is.EqualTo(gate.Weights));
                 Assert.That(Scores(), Is.EqualTo(before), "the network's tensors are unchanged");
 
-                GaitTraining.WriteGate(path, null);
+                GaitTraining.WriteGateAndStance(path, null);
                 Assert.That(new BlstmClassifier(ModelFile.Load(path)).Gate, Is.Null, "no standing to learn from: the stale gate goes");
 
                 // The stance slope learned in C# joins the model's own onsets; a map with other onsets is refused by file name.
                 var own = written.PhaseMap;
                 var sloped = PhaseMap.FromStanceFraction(own.Onset(GaitPhase.InitialSwing), own.RightOffset, 0.11, 1.07);
-                GaitTraining.WriteGate(path, gate, sloped);
+                GaitTraining.WriteGateAndStance(path, gate, sloped);
                 var withStance = new BlstmClassifier(ModelFile.Load(path));
                 Assert.That(withStance.PhaseMap.StanceSlope, Is.EqualTo(0.11));
                 Assert.That(withStance.Segments.Names(), Is.EqualTo(written.Segments.Names()));
                 Assert.That(Scores(), Is.EqualTo(before));
                 var other = PhaseMap.FromStanceFraction(own.Onset(GaitPhase.InitialSwing) + 0.02, own.RightOffset, 0.11, 1.07);
-                var e = Assert.Throws<ModelFormatException>(() => GaitTraining.WriteGate(path, gate, other));
+                var e = Assert.Throws<ModelFormatException>(() => GaitTraining.WriteGateAndStance(path, gate, other));
                 Assert.That(e.Message, Does.Contain(Path.GetFileName(path)).And.Contain("other phase onsets"));
                 // A cross-validation fold's map lends its slope; the model keeps its own onsets, which define its classes.
                 withStance.AdoptStance(PhaseMap.FromStanceFraction(own.Onset(GaitPhase.InitialSwing) + 0.02, own.RightOffset, 0.07, 1.2));

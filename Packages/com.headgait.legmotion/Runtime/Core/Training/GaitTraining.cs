@@ -51,7 +51,7 @@ namespace HeadGait.Training
         /// removes a stale one when <paramref name="gate"/> is null) and the phase map's stance slope, when given (its onsets
         /// must be the model's own, which define its classes). The network's tensors are left as they are.
         /// </summary>
-        public static void WriteGate(string modelPath, WalkingGate gate, PhaseMap stance = null)
+        public static void WriteGateAndStance(string modelPath, WalkingGate gate, PhaseMap stance = null)
         {
             var model = ModelFile.Load(modelPath);
             if (gate == null) model.Values.Remove(WalkingGate.ModelKey);
