@@ -78,7 +78,8 @@ namespace HeadGait.Tests
                 try
                 {
                     var t = CorrelationTemplate.Parse(Mutate(cor, r), "cor.txt");
-                    new CorrelationClassifier(t).Classify(new SignalWindow(90, 100));
+                    var c = new CorrelationClassifier(t);
+                    c.Classify(new SignalWindow(c.WindowLength, 100));
                 }
                 catch (FormatException e)
                 {

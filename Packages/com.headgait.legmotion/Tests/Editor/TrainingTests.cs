@@ -20,6 +20,44 @@ namespace HeadGait.Tests
             for (int i = 0; i < WalkingGate.FeatureCount; i++) Assert.That(gates.Learned.Weights[i], Is.EqualTo(gates.Detectors.Weights[i]));
             Assert.That(gates.Learned.Weights[WalkingGate.FeatureCount], Is.GreaterThan(gates.Detectors.Weights[WalkingGate.FeatureCount]));
         }
+
+        /// <summary>The gate's inputs on the newest window of a head-acceleration stream.</summary>
+        static double[] LastFeatures(IEnumerable<ImuSample> samples)
+        {
+            var f = new double[WalkingGate.FeatureCount];
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
+            foreach (var s in samples) pre.Push(s, w => WalkingGate.Features(w, f));
+            return f;
+        }
+
+        static IEnumerable<ImuSample> Bouncing(double hertz, double amplitude, double seconds)
+        {
+            for (int i = 0; i < seconds * 100; i++)
+                yield return new ImuSample(0.01 * i, 0, 0, 9.80665 + amplitude * Math.Sin(2 * Math.PI * hertz * 0.01 * i));
+        }
+
+        [Test]
+        public void HalfAStepLaterWalkingHasSwungToTheOtherSideOfItsBounceAndHoppingHasNot()
+        {
+            var walker = GaitSubject.Random(11, "walker");
+            var walk = WalkingStreamGenerator.Generate("walk", walker, new StreamScript().Walk(6, Foot.Left), 12);
+            double walking = LastFeatures(walk.Samples.ConvertAll(r => r.Imu))[WalkingGate.FeatureCount - 1];
+            Assert.That(walking, Is.LessThan(-0.3), "a step bounce (about 2 Hz) a quarter-second later");
+            Assert.That(LastFeatures(Bouncing(4.1, 4, 3))[WalkingGate.FeatureCount - 1], Is.GreaterThan(0.5), "hopping on the spot at 4 Hz");
+            Assert.That(LastFeatures(Bouncing(0.6, 2, 3))[WalkingGate.FeatureCount - 1], Is.GreaterThan(0.2), "a slow bow");
+            Assert.That(LastFeatures(Bouncing(4.1, 0, 3))[WalkingGate.FeatureCount - 1], Is.EqualTo(0), "a head held still");
+        }
+
+        [Test]
+        public void AGateWrittenBeforeTheAutocorrelationKeepsItsDecisions()
+        {
+            var old = WalkingGate.Parse("1.5,2,-0.5,0.25,-3,7,-12");
+            Assert.That(old.Weights, Is.EqualTo(new[] { 1.5, 2, -0.5, 0.25, -3, 7, 0, -12 }));
+            var kv = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-12\n", "# test", "thr.txt");
+            Assert.That(kv.Gate("walking_gate").Weights, Is.EqualTo(old.Weights));
+            Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=1,2,3\n", "# test", "thr.txt").Gate("walking_gate"),
+                Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains("expected 8"));
+        }
     }
 
     public class StrideSegmentTests

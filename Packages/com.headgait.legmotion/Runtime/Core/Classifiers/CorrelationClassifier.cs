@@ -112,8 +112,8 @@ namespace HeadGait
                 }
             }
             centred = new double[L];
-            prefix = new double[WindowLength + 1];
-            prefixSq = new double[WindowLength + 1];
+            prefix = new double[SearchLength + 1];
+            prefixSq = new double[SearchLength + 1];
             int ring = 2 * s.PeakConfirmSamples + 1;
             recentR = new double[ring];
             recentEvidence = new double[ring];
@@ -140,7 +140,11 @@ namespace HeadGait
         }
 
         public string Name => "COR";
-        public int WindowLength => settings.MaxStepSamples;
+        /// <summary>History read: the longest step searched, and the walking gate's second.</summary>
+        public int WindowLength => Math.Max(SearchLength, WalkingGate.HistorySamples);
+
+        /// <summary>Newest samples the step search correlates (the longest step).</summary>
+        int SearchLength => settings.MaxStepSamples;
         public PhaseMap PhaseMap => template.PhaseMap;
         public CorrelationTemplate Template => template;
         public StepClock Clock => clock;
@@ -168,9 +172,9 @@ namespace HeadGait
             if (n < WindowLength) throw new ArgumentException($"COR needs {WindowLength}-sample windows, got {n}.");
             double now = window.EndTime;
             var x = window.Smv;
-            int o = n - WindowLength;
+            int o = n - SearchLength;
             prefix[0] = prefixSq[0] = 0;
-            for (int i = 0; i < WindowLength; i++)
+            for (int i = 0; i < SearchLength; i++)
             {
                 double v = x[o + i];
                 prefix[i + 1] = prefix[i] + v;
@@ -178,7 +182,7 @@ namespace HeadGait
             }
 
             // The head does not move like walking in the newest 0.5 s: standing, whatever the shape.
-            int valid = Math.Min(window.Count, WindowLength);
+            int valid = Math.Min(window.Count, SearchLength);
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
             bool moving = template.Gate.Passes(window);
@@ -197,7 +201,7 @@ namespace HeadGait
                 {
                     for (int i = from; i <= to; i++)
                     {
-                        double r = Correlation(x, o, stepCurves[t][i], WindowLength);
+                        double r = Correlation(x, o, stepCurves[t][i], SearchLength);
                         if (r > best)
                         {
                             best = r;

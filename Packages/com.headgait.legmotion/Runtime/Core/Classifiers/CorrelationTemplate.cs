@@ -295,7 +295,7 @@ namespace HeadGait
             var kv = KeyValueText.Parse(text, Magic, source);
             var map = kv.PhaseMap("phase_map");
             double minR = kv.Number("min_correlation", -0.999, 0.999);
-            var gate = new WalkingGate(kv.Numbers("walking_gate", WalkingGate.FeatureCount + 1, -1e4, 1e4));
+            var gate = kv.Gate("walking_gate");
             double lead = kv.Number("clock_lead", -0.49, 0.49, 0);
             int count = (int)kv.Number("templates", 1, 16);
             var templates = new List<StepTemplate>();

@@ -83,6 +83,13 @@ namespace HeadGait
             return r;
         }
 
+        /// <summary>A walking gate's weights (also the one-shorter list written before its autocorrelation input).</summary>
+        public WalkingGate Gate(string key)
+        {
+            int count = Need(key).Split(',').Length == WalkingGate.FeatureCount ? WalkingGate.FeatureCount : WalkingGate.FeatureCount + 1;
+            return WalkingGate.FromWeights(Numbers(key, count, -1e4, 1e4));
+        }
+
         public PhaseMap PhaseMap(string key)
         {
             try

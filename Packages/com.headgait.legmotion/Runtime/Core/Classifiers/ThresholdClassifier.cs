@@ -104,7 +104,7 @@ namespace HeadGait
             };
             s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
             s.Clock.Lead = kv.Number("clock_lead", -0.49, 0.49, 0);
-            if (kv.Has("walking_gate")) s.Gate = new WalkingGate(kv.Numbers("walking_gate", WalkingGate.FeatureCount + 1, -1e4, 1e4));
+            if (kv.Has("walking_gate")) s.Gate = kv.Gate("walking_gate");
             return s;
         }
     }
@@ -134,7 +134,8 @@ namespace HeadGait
         }
 
         public string Name => "THR";
-        public int WindowLength => 50;
+        /// <summary>History read: the paper's 0.5 s for the threshold and side, a second for the walking gate.</summary>
+        public int WindowLength => Math.Max(ThresholdSettings.ProfileSamples, WalkingGate.HistorySamples);
         public PhaseMap PhaseMap => settings.PhaseMap;
         public ThresholdSettings Settings => settings;
         public StepClock Clock => clock;
@@ -256,7 +257,7 @@ namespace HeadGait
                 var thr = new ThresholdClassifier(probe);
                 var detections = new List<double>();
                 thr.ContactDetected += (t, e) => detections.Add(t);
-                var pre = new StreamPreprocessor();
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
                 foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
                 var contacts = PhaseEvents.TruthContacts(rec);
                 foreach (var d in detections)

@@ -10,12 +10,22 @@ namespace HeadGait
     /// 0.5 s (log spread of SMV, of the vertical, lateral and forward acceleration, and of SMV's sample-to-sample change)
     /// and how level it is (mean vertical specific force over g: bowing tips it far forward). Gestures move the head
     /// sideways and forwards, walking bounces it up and down at step frequency with sharp heel strikes; a threshold on
-    /// SMV alone (or a fixed correlation) confuses waving with calm walking.
+    /// SMV alone (or a fixed correlation) confuses waving with calm walking. The last input is SMV's autocorrelation over
+    /// the newest second at a lag of 0.25 s, half a step: walking swings to the opposite side of its bounce by then, while
+    /// bowing and waving (slower) and hopping on the spot (about 4 Hz) are still on the same side. Leave-one-style-out on
+    /// the real training windows, passing 98.5 % of walking: standing passed as walking 6.8 % without it, 3.5 % with it
+    /// (bows and waves of the second corpus 15.0 and 8.6 %); over 0.5 s it did not help (5.7 %).
     /// </summary>
     public sealed class WalkingGate
     {
-        public const int FeatureCount = 6;
+        public const int FeatureCount = 7;
         const int Samples = 50;
+
+        /// <summary>History the gate reads (grid samples at 100 Hz): the autocorrelation's second.</summary>
+        public const int HistorySamples = 100;
+
+        /// <summary>The autocorrelation's lag (s).</summary>
+        public const double HalfStepLag = 0.25;
         const double Epsilon = 0.01;
 
         readonly double[] weights; // FeatureCount weights, then the bias
@@ -30,7 +40,7 @@ namespace HeadGait
         }
 
         /// <summary>Lets everything through (no gate).</summary>
-        public static WalkingGate Open { get; } = new WalkingGate(new double[] { 0, 0, 0, 0, 0, 0, 1 });
+        public static WalkingGate Open { get; } = new WalkingGate(new double[] { 0, 0, 0, 0, 0, 0, 0, 1 });
 
         public double[] Weights => (double[])weights.Clone();
 
@@ -60,6 +70,26 @@ namespace HeadGait
             double up = 0;
             for (int i = first; i < first + n; i++) up += w.Vertical[i];
             f[5] = n > 0 ? up / n / StandardGravity : 1;
+            f[6] = Autocorrelation(w, (int)Math.Round(HalfStepLag * w.SampleRate));
+        }
+
+        /// <summary>SMV's autocorrelation (mean removed) at <paramref name="lag"/> over the newest second; 0 when it is flat or too short.</summary>
+        static double Autocorrelation(SignalWindow w, int lag)
+        {
+            int n = Math.Min((int)Math.Round(HistorySamples * w.SampleRate / 100), Math.Min(w.Count, w.Length));
+            if (lag < 1 || n < 2 * lag) return 0;
+            int first = w.Length - n;
+            double m = 0;
+            for (int i = first; i < first + n; i++) m += w.Smv[i];
+            m /= n;
+            double ss = 0, lagged = 0;
+            for (int i = first; i < first + n; i++)
+            {
+                double a = w.Smv[i] - m;
+                ss += a * a;
+                if (i + lag < first + n) lagged += a * (w.Smv[i + lag] - m);
+            }
+            return ss > 1e-9 ? lagged / ss : 0;
         }
 
         const double StandardGravity = 9.80665;
@@ -81,12 +111,26 @@ namespace HeadGait
         public static WalkingGate Parse(string text)
         {
             var parts = (text ?? "").Split(',');
-            if (parts.Length != FeatureCount + 1) throw new FormatException($"a walking gate has {FeatureCount + 1} comma-separated weights, found {parts.Length}");
+            if (parts.Length != FeatureCount + 1 && parts.Length != FeatureCount)
+                throw new FormatException($"a walking gate has {FeatureCount + 1} comma-separated weights, found {parts.Length}");
             var w = new double[parts.Length];
             for (int i = 0; i < parts.Length; i++)
                 if (!double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out w[i]) || !ImuSample.IsFiniteNumber(w[i]) || Math.Abs(w[i]) > 1e4)
                     throw new FormatException($"walking gate weight {i + 1} is '{parts[i].Trim()}', not a finite number below 1e4");
-            return new WalkingGate(w);
+            return FromWeights(w);
+        }
+
+        /// <summary>
+        /// A gate from its weights as written: <see cref="FeatureCount"/> and the bias, or one fewer from a model written
+        /// before the autocorrelation input, which then weighs nothing and the gate decides as it did.
+        /// </summary>
+        public static WalkingGate FromWeights(double[] w)
+        {
+            if (w == null || w.Length != FeatureCount) return new WalkingGate(w);
+            var full = new double[FeatureCount + 1];
+            Array.Copy(w, full, FeatureCount - 1);
+            full[FeatureCount] = w[FeatureCount - 1];
+            return new WalkingGate(full);
         }
 
         public string Serialize()
@@ -136,7 +180,7 @@ namespace HeadGait
             foreach (var rec in recordings)
             {
                 if (!rec.HasTruth) continue;
-                var pre = new StreamPreprocessor();
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = HistorySamples });
                 int row = -1;
                 long count = 0;
                 var rows = rec.Samples;
