@@ -1,3 +1,4 @@
+using System;
 using NUnit.Framework;
 
 namespace HeadGait.Tests
@@ -130,6 +131,52 @@ namespace HeadGait.Tests
             Assert.That(latch.PhaseAt(m, Foot.Left, 0.58, slow), Is.EqualTo(GaitPhase.PreSwing));
             latch.Reset();
             Assert.That(latch.PhaseAt(m, Foot.Left, 0.58, fast), Is.EqualTo(GaitPhase.InitialSwing), "after a reset the period as it is");
+        }
+    }
+
+    public class AdvancedPredictionTests
+    {
+        /// <summary>Walks at a step period that switches every 0.37 s, so it changes at every point of the feet's cycles.</summary>
+        sealed class SwitchingWalker : IGaitClassifier
+        {
+            double s, lastTime = double.NaN;
+            public string Name => "switching";
+            public PhaseMap PhaseMap { get; } = PhaseMap.FromStanceFraction(0.574, 0.5, stanceSlope: 0.3, referenceStridePeriod: 1.1);
+            public int WindowLength => 50;
+            public void Reset() => lastTime = double.NaN;
+
+            public GaitPrediction Classify(SignalWindow window)
+            {
+                double t = window.EndTime, period = (int)(t / 0.37) % 2 == 0 ? 0.45 : 0.65;
+                if (!double.IsNaN(lastTime)) s += (t - lastTime) / (2 * period);
+                lastTime = t;
+                return GaitPrediction.Walking(t, s, period, 1, GaitPhase.InitialContact, GaitPhase.PreSwing);
+            }
+        }
+
+        [Test]
+        public void APredictionMovedAheadLandsEachFootOncePerStride()
+        {
+            // The pose path's predictions are moved ahead by the source lag and their phases read anew: a foot that has
+            // just lifted must not go back to stance when the period grows.
+            var walker = new SwitchingWalker();
+            var pipeline = new GaitPipeline(walker) { SourceLag = 0.05 };
+            int landings = 0, strides = 0;
+            GaitPhase previous = GaitPhase.Standing;
+            double lastCycle = double.NaN;
+            for (int i = 0; i < 3000; i++)
+            {
+                pipeline.Push(0.01 * i, 0, 0, 9.80665 + Math.Sin(0.2 * i));
+                var p = pipeline.LatestPrediction;
+                if (!p.IsWalking) continue;
+                if (GaitPhases.IsStance(p.Left) && GaitPhases.IsSwing(previous)) landings++;
+                previous = p.Left;
+                double cycle = walker.PhaseMap.CyclePosition(Foot.Left, p.StridePosition);
+                if (cycle < lastCycle - 0.5) strides++;
+                lastCycle = cycle;
+            }
+            Assert.That(strides, Is.GreaterThan(20));
+            Assert.That(landings, Is.EqualTo(strides).Within(1));
         }
     }
 }

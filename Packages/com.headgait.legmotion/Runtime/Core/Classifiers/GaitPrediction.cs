@@ -40,16 +40,6 @@ namespace HeadGait
         public static GaitPrediction Walking(double time, double stridePosition, double stepPeriod, double confidence, GaitPhase left, GaitPhase right)
             => new GaitPrediction(time, true, PhaseMap.Wrap(stridePosition), stepPeriod, confidence, left, right);
 
-        /// <summary>
-        /// The prediction moved <paramref name="seconds"/> ahead along its own step period (standing stays standing): for a
-        /// signal that arrives late by a known amount, so that the avatar shows where the legs are now.
-        /// </summary>
-        public GaitPrediction Advanced(double seconds, PhaseMap map)
-        {
-            if (!IsWalking || seconds == 0 || !(StepPeriod > 0)) return this;
-            return Walking(Time, StridePosition + seconds / (2 * StepPeriod), StepPeriod, Confidence, map);
-        }
-
         public GaitPhase PhaseOf(Foot foot) => foot == Foot.Left ? Left : Right;
 
         public override string ToString()

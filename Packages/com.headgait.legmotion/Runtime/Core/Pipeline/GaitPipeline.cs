@@ -14,6 +14,7 @@ namespace HeadGait
         readonly GaitAnimatorStateMachine animator;
         readonly Action<SignalWindow> onWindow;
         readonly Stopwatch stopwatch = new Stopwatch();
+        readonly StanceLatch advancedStance = new StanceLatch(); // the feet's stance shares of predictions moved ahead by SourceLag
         readonly LearnedWindowBatch batch; // null unless the classifier is a learned one
         bool batching;                      // inside PushBatch: windows and restarts are queued, not run
 
@@ -136,15 +137,30 @@ namespace HeadGait
 
         void Publish(GaitPrediction prediction)
         {
-            if (SourceLag != 0) prediction = prediction.Advanced(SourceLag, classifier.PhaseMap);
+            if (SourceLag != 0) prediction = Advanced(prediction);
             LatestPrediction = prediction;
             Latest = animator.Update(prediction);
             Windows++;
             FrameProduced?.Invoke(prediction, Latest);
         }
 
+        /// <summary>
+        /// The prediction moved <see cref="SourceLag"/> ahead along its own step period (standing stays standing), so the
+        /// avatar shows where the legs are now; each foot keeps its stance share from contact to contact, as in the clocks.
+        /// </summary>
+        GaitPrediction Advanced(GaitPrediction p)
+        {
+            if (!p.IsWalking) advancedStance.Reset();
+            if (!p.IsWalking || !(p.StepPeriod > 0)) return p;
+            double s = p.StridePosition + SourceLag / (2 * p.StepPeriod);
+            var map = classifier.PhaseMap;
+            return GaitPrediction.Walking(p.Time, s, p.StepPeriod, p.Confidence,
+                advancedStance.PhaseAt(map, Foot.Left, s, p.StepPeriod), advancedStance.PhaseAt(map, Foot.Right, s, p.StepPeriod));
+        }
+
         public void Reset()
         {
+            advancedStance.Reset();
             preprocessor.Reset();
             classifier.Reset();
             animator.Reset();
