@@ -111,6 +111,9 @@ namespace HeadGait.Tests
             Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;0.1"), Throws.TypeOf<System.FormatException>());
             Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;NaN,1.1"), Throws.TypeOf<System.FormatException>());
             Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;0.1,0"), Throws.TypeOf<System.FormatException>());
+            Assert.That(() => PhaseMap.Parse("0,0.02,0.12,0.31,0.5,0.62,0.75,0.87;0.5;1e999,1.1"),
+                Throws.TypeOf<System.FormatException>().With.Message.Contains("1e999"), "an overflow is a format error too");
+            Assert.That(() => PhaseMap.Parse("0,0.02,x,0.31,0.5,0.62,0.75,0.87;0.5"), Throws.TypeOf<System.FormatException>().With.Message.Contains("'x'"));
         }
 
         [Test]

@@ -175,6 +175,13 @@ namespace HeadGait
             return sb.ToString();
         }
 
+        /// <summary>A finite number, or a <see cref="FormatException"/> that quotes the text (never an overflow: Mono's parser throws one).</summary>
+        static double Number(string text)
+        {
+            if (!KeyValueText.TryNumber(text.Trim(), out double v)) throw new FormatException($"'{text.Trim()}' is not a finite number.");
+            return v;
+        }
+
         public static PhaseMap Parse(string text)
         {
             if (text == null) throw new FormatException("Phase map text is missing.");
@@ -185,15 +192,15 @@ namespace HeadGait
             if (values.Length != GaitPhases.WalkingPhaseCount) throw new FormatException("Phase map needs 8 onsets.");
             var onsets = new double[values.Length];
             for (int i = 0; i < values.Length; i++)
-                onsets[i] = double.Parse(values[i], NumberStyles.Float, CultureInfo.InvariantCulture);
-            double offset = double.Parse(parts[1], NumberStyles.Float, CultureInfo.InvariantCulture);
+                onsets[i] = Number(values[i]);
+            double offset = Number(parts[1]);
             double slope = 0, reference = 1;
             if (parts.Length == 3)
             {
                 string[] stance = parts[2].Split(',');
                 if (stance.Length != 2) throw new FormatException("Phase map's stance part must be '<slope>,<reference stride period>'.");
-                slope = double.Parse(stance[0], NumberStyles.Float, CultureInfo.InvariantCulture);
-                reference = double.Parse(stance[1], NumberStyles.Float, CultureInfo.InvariantCulture);
+                slope = Number(stance[0]);
+                reference = Number(stance[1]);
             }
             try
             {
