@@ -323,6 +323,25 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void TheSidewaysProfileCoversAStrideAndAHalfSecondOneStillReads()
+        {
+            var s = TestData.Threshold;
+            Assert.That(s.LateralProfile.Length, Is.EqualTo(ThresholdSettings.ProfileSamples));
+            // A file from before: the profile's newest half second only. THR reads it and names the feet from it.
+            var half = new double[ThresholdSettings.HalfSecondProfileSamples];
+            Array.Copy(s.LateralProfile, s.LateralProfile.Length - half.Length, half, 0, half.Length);
+            string text = s.Serialize();
+            int at = text.IndexOf("lateral_profile=", StringComparison.Ordinal), end = text.IndexOf('\n', at);
+            string old = text.Substring(0, at) + "lateral_profile=" + string.Join(",", Array.ConvertAll(half, v => v.ToString("R", System.Globalization.CultureInfo.InvariantCulture))) + text.Substring(end);
+            var read = ThresholdSettings.Parse(old, "thr.txt");
+            Assert.That(read.LateralProfile, Is.EqualTo(half));
+            var r = ReplayEvaluator.Run(TestData.Eval("walk_straight"), new ThresholdClassifier(read));
+            Assert.That(r.ClassifierMetrics.StepRightFoot, Is.GreaterThan(0.9));
+            Assert.That(() => ThresholdSettings.Parse(text.Substring(0, at) + "lateral_profile=1,2,3" + text.Substring(end), "thr.txt"),
+                Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains("lateral_profile"));
+        }
+
+        [Test]
         public void CalibrationPicksAFloorBetweenNoiseAndStepPeaks()
         {
             Assert.That(TestData.Threshold.Floor, Is.InRange(0.3, 4.0));

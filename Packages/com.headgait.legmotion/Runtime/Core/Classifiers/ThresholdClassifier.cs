@@ -27,19 +27,31 @@ namespace HeadGait
         public double ContactLag = 0.0;
 
         /// <summary>
-        /// Mean lateral acceleration over the 0.5 s up to a left contact's detection (centred; right contacts mirrored in).
+        /// Mean lateral acceleration over the second up to a left contact's detection (centred; right contacts mirrored in).
         /// Its correlation with the window's lateral acceleration says which foot landed. A learned curve, not a sign rule:
         /// where in the sway a crossing falls moves with style and threshold, and a single sign flips with it.
         /// </summary>
         public double[] LateralProfile = DefaultLateralProfile();
 
-        public const int ProfileSamples = 50;
+        /// <summary>
+        /// Samples of the lateral profile: a second, about one stride, since the sway repeats per stride rather than per
+        /// step. Leave-one-style-out against the paper's 0.5 s: misclassification 37.5 to 36.8 %, step precision 90.4 to
+        /// 91.8 %, right foot 95.7 to 97.6 % (0.8, 1.1 and 1.3 s did about as well).
+        /// </summary>
+        public const int ProfileSamples = 100;
+
+        /// <summary>Length of the profiles written before it covered a second; they still read.</summary>
+        public const int HalfSecondProfileSamples = 50;
 
         /// <summary>Until trained: the body sways towards the foot about to land, so lateral acceleration turns towards it.</summary>
         static double[] DefaultLateralProfile()
         {
             var p = new double[ProfileSamples];
-            for (int i = 0; i < p.Length; i++) p[i] = Math.Sin(Math.PI * (i + 1.0) / ProfileSamples - Math.PI / 2);
+            for (int i = 0; i < p.Length; i++)
+            {
+                double t = (i + 1.0 - ProfileSamples) * 0.01; // seconds before the detection (0 = it)
+                p[i] = -Math.Cos(Math.PI * (t / 0.5 + 1));
+            }
             return p;
         }
 
@@ -100,7 +112,8 @@ namespace HeadGait
                 PeakFraction = kv.Number("peak_fraction", 0, 1),
                 RearmFraction = kv.Number("rearm_fraction", 0, 1),
                 ContactLag = kv.Number("contact_lag", -0.45, 0.45),
-                LateralProfile = kv.Numbers("lateral_profile", ProfileSamples, -1e3, 1e3),
+                LateralProfile = kv.Numbers("lateral_profile",
+                    kv.Need("lateral_profile").Split(',').Length == HalfSecondProfileSamples ? HalfSecondProfileSamples : ProfileSamples, -1e3, 1e3),
             };
             s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
             s.Clock.Lead = kv.Number("clock_lead", -0.49, 0.49, 0);
@@ -134,7 +147,7 @@ namespace HeadGait
         }
 
         public string Name => "THR";
-        /// <summary>History read: the paper's 0.5 s for the threshold and side, a second for the walking gate.</summary>
+        /// <summary>History read: a second, for the sideways profile and the walking gate.</summary>
         public int WindowLength => Math.Max(ThresholdSettings.ProfileSamples, WalkingGate.HistorySamples);
         public PhaseMap PhaseMap => settings.PhaseMap;
         public ThresholdSettings Settings => settings;
@@ -198,7 +211,7 @@ namespace HeadGait
             return clock.Predict(now, confidence);
         }
 
-        /// <summary>Pearson r of the newest 0.5 s of lateral acceleration with the left-contact profile (its mean removes head tilt).</summary>
+        /// <summary>Pearson r of the newest second of lateral acceleration with the left-contact profile (its mean removes head tilt).</summary>
         double SideEvidence(SignalWindow window)
         {
             var p = settings.LateralProfile;
