@@ -30,10 +30,16 @@ namespace HeadGait
         public static GaitPrediction Standing(double time, double confidence = 0)
             => new GaitPrediction(time, false, 0, 0, confidence, GaitPhase.Standing, GaitPhase.Standing);
 
-        public static GaitPrediction Walking(double time, double stridePosition, double stepPeriod, double confidence, PhaseMap map)
+        /// <summary>
+        /// Walking with the feet's phases read from <paramref name="map"/> at this step period; through <paramref name="stance"/>
+        /// when given, so that each foot keeps its stance share from contact to contact (see <see cref="StanceLatch"/>).
+        /// </summary>
+        public static GaitPrediction Walking(double time, double stridePosition, double stepPeriod, double confidence, PhaseMap map, StanceLatch stance = null)
         {
             double s = PhaseMap.Wrap(stridePosition);
-            return new GaitPrediction(time, true, s, stepPeriod, confidence, map.PhaseAt(Foot.Left, s, stepPeriod), map.PhaseAt(Foot.Right, s, stepPeriod));
+            return stance == null
+                ? new GaitPrediction(time, true, s, stepPeriod, confidence, map.PhaseAt(Foot.Left, s, stepPeriod), map.PhaseAt(Foot.Right, s, stepPeriod))
+                : new GaitPrediction(time, true, s, stepPeriod, confidence, stance.PhaseAt(map, Foot.Left, s, stepPeriod), stance.PhaseAt(map, Foot.Right, s, stepPeriod));
         }
 
         /// <summary>Walking with the feet's phases given by the classifier (they must agree with the stride position under its map).</summary>

@@ -83,12 +83,16 @@ namespace HeadGait
             return r;
         }
 
+        /// <summary>
+        /// <paramref name="count"/> numbers as <see cref="Numbers(string, int, double, double)"/>, or <paramref name="olderCount"/>
+        /// from a file written before the list grew; any other length is reported against <paramref name="count"/>.
+        /// </summary>
+        public double[] Numbers(string key, int count, int olderCount, double min, double max)
+            => Numbers(key, Need(key).Split(',').Length == olderCount ? olderCount : count, min, max);
+
         /// <summary>A walking gate's weights (also the one-shorter list written before its autocorrelation input).</summary>
         public WalkingGate Gate(string key)
-        {
-            int count = Need(key).Split(',').Length == WalkingGate.FeatureCount ? WalkingGate.FeatureCount : WalkingGate.FeatureCount + 1;
-            return WalkingGate.FromWeights(Numbers(key, count, -1e4, 1e4));
-        }
+            => WalkingGate.FromWeights(Numbers(key, WalkingGate.FeatureCount + 1, WalkingGate.FeatureCount, -1e4, 1e4));
 
         public PhaseMap PhaseMap(string key)
         {

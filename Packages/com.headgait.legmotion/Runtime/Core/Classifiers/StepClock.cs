@@ -158,8 +158,7 @@ namespace HeadGait
                 if (back > 0 && back < settings.HoldBack) s = reported;
             }
             reported = s;
-            return GaitPrediction.Walking(now, s, period, confidence,
-                stance.PhaseAt(map, Foot.Left, s, period), stance.PhaseAt(map, Foot.Right, s, period));
+            return GaitPrediction.Walking(now, s, period, confidence, map, stance);
         }
     }
 }

@@ -152,10 +152,7 @@ namespace HeadGait
         {
             if (!p.IsWalking) advancedStance.Reset();
             if (!p.IsWalking || !(p.StepPeriod > 0)) return p;
-            double s = p.StridePosition + SourceLag / (2 * p.StepPeriod);
-            var map = classifier.PhaseMap;
-            return GaitPrediction.Walking(p.Time, s, p.StepPeriod, p.Confidence,
-                advancedStance.PhaseAt(map, Foot.Left, s, p.StepPeriod), advancedStance.PhaseAt(map, Foot.Right, s, p.StepPeriod));
+            return GaitPrediction.Walking(p.Time, p.StridePosition + SourceLag / (2 * p.StepPeriod), p.StepPeriod, p.Confidence, classifier.PhaseMap, advancedStance);
         }
 
         public void Reset()

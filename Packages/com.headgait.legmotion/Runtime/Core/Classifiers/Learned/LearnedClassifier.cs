@@ -19,7 +19,6 @@ namespace HeadGait
         readonly double[] scores;
         readonly double[] probabilities;
         readonly PhaseSequenceFilter filter;
-        readonly PhaseFilterSettings filterSettings;
         readonly CSharpNetwork network;
         ILearnedEvaluator evaluator;
         int lastClass = -1;
@@ -65,7 +64,6 @@ namespace HeadGait
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];
             filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
-            this.filterSettings = filterSettings;
             stepPeriod = DefaultStepPeriod;
             network = new CSharpNetwork(this);
             evaluator = network;
@@ -216,6 +214,7 @@ namespace HeadGait
         int Steady(int best)
         {
             int n = Segments.Count;
+            var filterSettings = filter.Settings;
             int back = (lastClass - best + n) % n, ahead = (best - lastClass + n) % n;
             bool behind = back >= 1 && back <= filterSettings.HoldBackSegments;
             bool swapped = ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;

@@ -46,6 +46,8 @@ namespace HeadGait
         readonly double[] belief, predicted, prior;
         bool started;
 
+        public PhaseFilterSettings Settings => settings;
+
         public PhaseSequenceFilter(StrideSegments segments, PhaseFilterSettings settings = null)
         {
             this.segments = segments ?? throw new ArgumentNullException(nameof(segments));
