@@ -44,6 +44,28 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AWalkRecognisedJustAfterAFootLandedStartsByLandingThatFoot()
+        {
+            // The right foot landed at s = 0.5 and the walk is recognised a little after: the avatar swings that foot in
+            // and lands it, instead of planting it straight from standing (the step would not be seen).
+            var a = new GaitAnimatorStateMachine(Map);
+            double t = 0;
+            var frames = new List<AnimatorFrame>();
+            WalkFor(a, ref t, 0.505, 20, frames);
+            int start = frames.FindIndex(f => f.State != LocomotionState.Standing);
+            Assert.That(frames[start].State, Is.EqualTo(LocomotionState.StartWalkRight));
+            Assert.That(frames[start].Right, Is.EqualTo(GaitPhase.TerminalSwing));
+            Assert.That(frames.FindIndex(start, f => f.Right == GaitPhase.InitialContact), Is.GreaterThan(start));
+
+            // Recognised later than StartLookBack after that contact: the left foot, in swing, leads as before.
+            var b = new GaitAnimatorStateMachine(Map);
+            t = 0;
+            frames.Clear();
+            WalkFor(b, ref t, 0.5 + new AnimatorSettings().StartLookBack + 0.02, 20, frames);
+            Assert.That(frames.Find(f => f.State != LocomotionState.Standing).State, Is.EqualTo(LocomotionState.StartWalkLeft));
+        }
+
+        [Test]
         public void StartClipEndsWhenTheLeadFootLands()
         {
             var a = new GaitAnimatorStateMachine(Map);

@@ -43,6 +43,13 @@ namespace HeadGait
         /// (for BlendTime) instead of taking another step.
         /// </summary>
         public double FinishLookBack = 0.3;
+
+        /// <summary>
+        /// A walk is recognised a few predictions after it begins. If a foot landed within this stride fraction before the
+        /// Start begins, the Start rewinds to just before that contact, so the avatar lands the lead foot (starting after
+        /// it would plant the foot straight from standing, without a step).
+        /// </summary>
+        public double StartLookBack = 0.03;
     }
 
     /// <summary>What the avatar's legs should show after one update.</summary>
@@ -199,6 +206,8 @@ namespace HeadGait
                     if (state == LocomotionState.Standing)
                     {
                         s = wrongS;
+                        if (LastFootToLand(s, out _, out double landedAgo) && landedAgo <= settings.StartLookBack)
+                            s = PhaseMap.Wrap(s - landedAgo - StartLead);
                         Foot lead = NextFootToLand(s, out double target);
                         Enter(lead == Foot.Left ? LocomotionState.StartWalkLeft : LocomotionState.StartWalkRight, target);
                     }
@@ -262,6 +271,9 @@ namespace HeadGait
 
             return Frame(p.Time, resync);
         }
+
+        /// <summary>How far before the lead foot's contact a rewound Start begins (stride fraction; about 10 ms).</summary>
+        const double StartLead = 0.01;
 
         AnimatorFrame Frame(double time, bool resync)
         {
