@@ -58,7 +58,7 @@ namespace HeadGait.Cli
                     var gate = gates.Detectors;
                     var thr = GaitTraining.TrainThreshold(training, map, gate);
                     thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
-                    Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g, SMV's autocorrelation half a step (0.25 s) apart over 1 s; bias): {gate.Serialize()}");
+                    Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g, SMV's autocorrelation half a step (0.25 s) apart over 1 s, then their pairwise products; bias): {gate.Serialize()}");
                     Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
                     var cor = GaitTraining.TrainCorrelation(training, map, gate);
                     cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));

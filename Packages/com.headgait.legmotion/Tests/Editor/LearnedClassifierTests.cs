@@ -259,7 +259,7 @@ namespace HeadGait.Tests
             var ungated = (LearnedClassifier)models.Create(name, out _);
             ungated.Gate = null;
             var refusing = (LearnedClassifier)models.Create(name, out _);
-            refusing.Gate = new WalkingGate(new double[] { 0, 0, 0, 0, 0, 0, 0, -1 });
+            refusing.Gate = WalkingGate.FromWeights(new double[] { 0, 0, 0, 0, 0, 0, 0, -1 });
 
             var open = ReplayEvaluator.Run(rec, ungated);
             var withGate = ReplayEvaluator.Run(rec, gated);
@@ -282,7 +282,9 @@ namespace HeadGait.Tests
                 double[] Scores() => (double[])new BlstmClassifier(ModelFile.Load(path)).ScoreFeatures(features).Clone();
                 var before = Scores();
 
-                var gate = new WalkingGate(new double[] { 1, 2, 3, 4, 5, 6, 0.5, -7 });
+                var weights = new double[WalkingGate.WeightCount];
+                for (int i = 0; i < weights.Length; i++) weights[i] = 0.5 * i - 7;
+                var gate = new WalkingGate(weights);
                 GaitTraining.WriteGateAndStance(path, gate);
                 var written = new BlstmClassifier(ModelFile.Load(path));
                 Assert.That(written.Gate.Weights, Is.EqualTo(gate.Weights));
@@ -314,7 +316,7 @@ namespace HeadGait.Tests
             }
         }
 
-        [TestCase("1,2,3", "8 comma-separated weights")]
+        [TestCase("1,2,3", "14 comma-separated weights")]
         [TestCase("1,2,3,4,5,6,NaN", "weight 7")]
         [TestCase("1,2,x,4,5,6,7", "weight 3")]
         [TestCase("1,2,3,4,5,6,1e9", "weight 7")]

@@ -17,8 +17,8 @@ namespace HeadGait.Tests
             Assert.That(gates.Detectors.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.DetectorPass).Weights));
             Assert.That(gates.Learned.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.LearnedPass).Weights));
             // Same regression, a bias letting more walking through.
-            for (int i = 0; i < WalkingGate.FeatureCount; i++) Assert.That(gates.Learned.Weights[i], Is.EqualTo(gates.Detectors.Weights[i]));
-            Assert.That(gates.Learned.Weights[WalkingGate.FeatureCount], Is.GreaterThan(gates.Detectors.Weights[WalkingGate.FeatureCount]));
+            for (int i = 0; i < WalkingGate.InputCount; i++) Assert.That(gates.Learned.Weights[i], Is.EqualTo(gates.Detectors.Weights[i]));
+            Assert.That(gates.Learned.Weights[WalkingGate.InputCount], Is.GreaterThan(gates.Detectors.Weights[WalkingGate.InputCount]));
         }
 
         /// <summary>The gate's inputs on the newest window of a head-acceleration stream.</summary>
@@ -48,15 +48,82 @@ namespace HeadGait.Tests
             Assert.That(LastFeatures(Bouncing(4.1, 0, 3))[WalkingGate.FeatureCount - 1], Is.EqualTo(0), "a head held still");
         }
 
-        [Test]
-        public void AGateWrittenBeforeTheAutocorrelationKeepsItsDecisions()
+        /// <summary>A gate's weights with the products weighing nothing: how a linear gate reads.</summary>
+        static double[] LinearWeights(double[] features, double bias)
         {
+            var w = new double[WalkingGate.WeightCount];
+            Array.Copy(features, w, features.Length);
+            w[WalkingGate.InputCount] = bias;
+            return w;
+        }
+
+        [Test]
+        public void OlderLinearGatesKeepTheirDecisions()
+        {
+            // Written before the autocorrelation input: six features and the bias.
             var old = WalkingGate.Parse("1.5,2,-0.5,0.25,-3,7,-12");
-            Assert.That(old.Weights, Is.EqualTo(new[] { 1.5, 2, -0.5, 0.25, -3, 7, 0, -12 }));
+            Assert.That(old.Weights, Is.EqualTo(LinearWeights(new[] { 1.5, 2, -0.5, 0.25, -3, 7, 0 }, -12)));
             var kv = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-12\n", "# test", "thr.txt");
             Assert.That(kv.Gate("walking_gate").Weights, Is.EqualTo(old.Weights));
+            // Written before the pairwise products: seven features and the bias.
+            var linear = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-0.8,-12\n", "# test", "thr.txt").Gate("walking_gate");
+            Assert.That(linear.Weights, Is.EqualTo(LinearWeights(new[] { 1.5, 2, -0.5, 0.25, -3, 7, -0.8 }, -12)));
             Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=1,2,3\n", "# test", "thr.txt").Gate("walking_gate"),
-                Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains("expected 8"));
+                Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains($"expected {WalkingGate.WeightCount}"));
+        }
+
+        [Test]
+        public void TheProductsScoreAsWritten()
+        {
+            // Only the first product weighs: the lateral log spread with itself, which the products read as the spread
+            // (m/s^2): the score is that weight times the spread squared, plus the bias.
+            var w = new double[WalkingGate.WeightCount];
+            w[WalkingGate.FeatureCount] = -1;
+            w[WalkingGate.InputCount] = 2;
+            var gate = new WalkingGate(w);
+            var f = new double[WalkingGate.FeatureCount];
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
+            double score = double.NaN;
+            for (int i = 0; i < 200; i++)
+                pre.Push(new ImuSample(0.01 * i, 0, 1.5 * Math.Sin(2 * Math.PI * 0.01 * i), 9.80665 + Math.Sin(4 * Math.PI * 0.01 * i)), window =>
+                {
+                    WalkingGate.Features(window, f);
+                    score = gate.Score(window);
+                });
+            Assert.That(Math.Exp(f[2]), Is.GreaterThan(0.2), "the head swings sideways");
+            Assert.That(score, Is.EqualTo(2 - Math.Exp(2 * f[2])).Within(1e-9));
+            Assert.That(WalkingGate.Parse(gate.Serialize()).Weights, Is.EqualTo(w));
+        }
+
+        [Test]
+        public void TheLearnedGateRefusesASwingFarHarderSidewaysThanAWalk()
+        {
+            // A child's wave swings the head sideways far harder than walking does (a spread of 8.5 m/s^2 here, as in the
+            // recorded one; people's walks 1-3.5), while the head bobs at walking cadence (2 Hz). A gate linear in the
+            // features took more movement for more walking and let all of it through (the committed linear gate passed
+            // every window); the committed gate, with the products, refuses most of it and still passes a generated walk.
+            var gate = ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile)).Gate;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
+            var waveScores = new List<double>();
+            for (int i = 0; i < 400; i++)
+            {
+                double t = 0.01 * i;
+                pre.Push(new ImuSample(t, 3.6 * Math.Sin(2 * Math.PI * t + 0.5), 12 * Math.Sin(2 * Math.PI * t), 9.80665 + Math.Sin(2 * Math.PI * 2 * t + 1)),
+                    w => { if (i >= 150) waveScores.Add(gate.Score(w)); });
+            }
+            Assert.That(waveScores.FindAll(z => z > 0).Count, Is.LessThan(waveScores.Count / 4), "the wave passes the gate");
+
+            var walk = WalkingStreamGenerator.Generate("walk", GaitSubject.Random(11, "walker"), new StreamScript().Walk(8, Foot.Left), 12);
+            pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
+            int passed = 0, windows = 0;
+            foreach (var r in walk.Samples)
+                pre.Push(r.Imu, w =>
+                {
+                    if (!r.HasTruth || r.Left == GaitPhase.Standing || w.Count < WalkingGate.HistorySamples) return;
+                    windows++;
+                    if (gate.Passes(w)) passed++;
+                });
+            Assert.That(passed, Is.GreaterThan(0.8 * windows), "the generated walk is refused");
         }
     }
 

@@ -181,14 +181,14 @@ namespace HeadGait
                 prefixSq[i + 1] = prefixSq[i] + v * v;
             }
 
-            // The head does not move like walking in the newest 0.5 s: standing, whatever the shape.
+            // The head does not move like walking: standing, whatever the shape (a walk in progress rides out a brief refusal).
             int valid = Math.Min(window.Count, SearchLength);
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
             bool moving = template.Gate.Passes(window);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
-            if (moving)
+            if (settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows))
             {
                 int from = 0, to = Math.Min(periods - 1, valid - settings.MinStepSamples);
                 if (clock.IsWalking(now) && to >= 0)

@@ -84,15 +84,19 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// <paramref name="count"/> numbers as <see cref="Numbers(string, int, double, double)"/>, or <paramref name="olderCount"/>
-        /// from a file written before the list grew; any other length is reported against <paramref name="count"/>.
+        /// <paramref name="count"/> numbers as <see cref="Numbers(string, int, double, double)"/>, or as many as one of
+        /// <paramref name="olderCounts"/> from a file written before the list changed; any other length is reported
+        /// against <paramref name="count"/>.
         /// </summary>
-        public double[] Numbers(string key, int count, int olderCount, double min, double max)
-            => Numbers(key, Need(key).Split(',').Length == olderCount ? olderCount : count, min, max);
+        public double[] Numbers(string key, int count, int[] olderCounts, double min, double max)
+        {
+            int found = Need(key).Split(',').Length;
+            return Numbers(key, Array.IndexOf(olderCounts, found) >= 0 ? found : count, min, max);
+        }
 
-        /// <summary>A walking gate's weights (also the one-shorter list written before its autocorrelation input).</summary>
+        /// <summary>A walking gate's weights (also the shorter lists older models hold, <see cref="WalkingGate.OlderLengths"/>).</summary>
         public WalkingGate Gate(string key)
-            => WalkingGate.FromWeights(Numbers(key, WalkingGate.FeatureCount + 1, WalkingGate.FeatureCount, -1e4, 1e4));
+            => WalkingGate.FromWeights(Numbers(key, WalkingGate.WeightCount, WalkingGate.OlderLengths(), -1e4, 1e4));
 
         public PhaseMap PhaseMap(string key)
         {

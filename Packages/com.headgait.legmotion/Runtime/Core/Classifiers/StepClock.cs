@@ -32,6 +32,16 @@ namespace HeadGait
         public int StopAfterStillWindows = 15;
 
         /// <summary>
+        /// While walking, a contact still counts until the walking gate has rejected this many windows in a row. The gate
+        /// can drop single windows of a calm walker, and a contact needing the gate open at that very window lost most of
+        /// the steps of the generated walker at half its amplitude; while standing, a contact needs the gate open.
+        /// </summary>
+        public int ContactWhileStillWindows = 10;
+
+        /// <summary>Whether a contact may count now: the gate is open, or the walk goes on and the gate has been shut only briefly.</summary>
+        public bool ContactAllowed(bool gateOpen, bool walking, int stillWindows) => gateOpen || (walking && stillWindows < ContactWhileStillWindows);
+
+        /// <summary>
         /// Seconds the reported stride position runs ahead of the clock. A contact is only known after it happened, so
         /// phase changes between contacts come out late on average; the trainer measures by how much and sets this.
         /// </summary>

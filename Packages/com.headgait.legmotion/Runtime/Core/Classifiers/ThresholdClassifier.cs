@@ -112,7 +112,7 @@ namespace HeadGait
                 PeakFraction = kv.Number("peak_fraction", 0, 1),
                 RearmFraction = kv.Number("rearm_fraction", 0, 1),
                 ContactLag = kv.Number("contact_lag", -0.45, 0.45),
-                LateralProfile = kv.Numbers("lateral_profile", ProfileSamples, HalfSecondProfileSamples, -1e3, 1e3),
+                LateralProfile = kv.Numbers("lateral_profile", ProfileSamples, new[] { HalfSecondProfileSamples }, -1e3, 1e3),
             };
             s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
             s.Clock.Lead = kv.Number("clock_lead", -0.49, 0.49, 0);
@@ -192,7 +192,7 @@ namespace HeadGait
             bool moving = settings.Gate.Passes(window);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
-            bool crossed = armed && smv >= threshold && lastSmv < threshold && moving;
+            bool crossed = armed && smv >= threshold && lastSmv < threshold && settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows);
             lastSmv = smv;
             if (crossed)
             {

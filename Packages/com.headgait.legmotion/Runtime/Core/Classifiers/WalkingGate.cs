@@ -6,19 +6,40 @@ using System.Text;
 namespace HeadGait
 {
     /// <summary>
-    /// A learned walking/standing gate for THR and COR: logistic regression on how much the head moves in the newest
-    /// 0.5 s (log spread of SMV, of the vertical, lateral and forward acceleration, and of SMV's sample-to-sample change)
-    /// and how level it is (mean vertical specific force over g: bowing tips it far forward). Gestures move the head
-    /// sideways and forwards, walking bounces it up and down at step frequency with sharp heel strikes; a threshold on
-    /// SMV alone (or a fixed correlation) confuses waving with calm walking. The last input is SMV's autocorrelation over
-    /// the newest second at a lag of 0.25 s, half a step: walking swings to the opposite side of its bounce by then, while
-    /// bowing and waving (slower) and hopping on the spot (about 4 Hz) are still on the same side. Leave-one-style-out
-    /// (`headgait benchmark`): standing shown as walking THR 4.9 to 3.3 %, COR 7.7 to 5.9 %, SVM 5.0 to 4.5 %, BLSTM 2.9
-    /// to 2.0 %; a fit on the real windows found no such gain over 0.5 s.
+    /// A learned walking/standing gate for THR and COR (and the SVM's and BLSTM's): logistic regression on how much the
+    /// head moves in the newest 0.5 s (log spread of SMV, of the vertical, lateral and forward acceleration, and of SMV's
+    /// sample-to-sample change), how level it is (mean vertical specific force over g: bowing tips it far forward) and
+    /// SMV's autocorrelation over the newest second at a lag of 0.25 s, half a step: walking swings to the opposite side
+    /// of its bounce by then, while bowing and waving (slower) and hopping on the spot (about 4 Hz) are still on the same
+    /// side. The regression reads these seven features and the pairwise products of three of them (<see cref="Multiplied"/>),
+    /// so it can also refuse a head that swings too hard sideways or forwards: a child's wave swings the head sideways
+    /// four times as hard as a walk, and a gate linear in the features took more movement for more walking. Gestures move
+    /// the head sideways and forwards, walking bounces it up and down at step frequency with sharp heel strikes; a
+    /// threshold on SMV alone (or a fixed correlation) confuses waving with calm walking.
     /// </summary>
     public sealed class WalkingGate
     {
+        /// <summary>Features measured per window (<see cref="Features"/>).</summary>
         public const int FeatureCount = 7;
+
+        /// <summary>
+        /// Features whose pairwise products the regression also weighs: the lateral and forward spreads (as spreads in
+        /// m/s^2, not logs) and the autocorrelation. Products of spreads grow with a swing that is too large but vanish for
+        /// a calm one (squares of log spreads also grew for a walker calmer than any in training, and refused the generated
+        /// walker at half its amplitude); products with SMV's and the vertical spread let the calm hand-waving of the
+        /// *active* style through with that style held out.
+        /// </summary>
+        static readonly int[] Multiplied = { 2, 3, 6 };
+        const int MultipliedCount = 3;
+
+        /// <summary>The regression's inputs: the features, then each product of two <see cref="Multiplied"/> ones (i &lt;= j).</summary>
+        public const int InputCount = FeatureCount + MultipliedCount * (MultipliedCount + 1) / 2;
+
+        /// <summary>Features that are log spreads (the first five); the products read them as spreads.</summary>
+        const int LogSpreads = 5;
+
+        /// <summary>Weights a gate has: one per input, then the bias.</summary>
+        public const int WeightCount = InputCount + 1;
         const int Samples = 50;
 
         /// <summary>History the gate reads (grid samples at 100 Hz): the autocorrelation's second.</summary>
@@ -28,19 +49,20 @@ namespace HeadGait
         public const double HalfStepLag = 0.25;
         const double Epsilon = 0.01;
 
-        readonly double[] weights; // FeatureCount weights, then the bias
+        readonly double[] weights; // InputCount weights, then the bias
         readonly double[] features = new double[FeatureCount];
+        readonly double[] productInputs = new double[MultipliedCount];
 
         public WalkingGate(double[] weights)
         {
-            if (weights == null || weights.Length != FeatureCount + 1) throw new ArgumentException($"A walking gate has {FeatureCount + 1} weights.");
+            if (weights == null || weights.Length != WeightCount) throw new ArgumentException($"A walking gate has {WeightCount} weights.");
             foreach (var w in weights)
                 if (!ImuSample.IsFiniteNumber(w) || Math.Abs(w) > 1e4) throw new ArgumentException("Walking gate weights must be finite and below 1e4.");
             this.weights = (double[])weights.Clone();
         }
 
         /// <summary>Lets everything through (no gate).</summary>
-        public static WalkingGate Open { get; } = new WalkingGate(new double[] { 0, 0, 0, 0, 0, 0, 0, 1 });
+        public static WalkingGate Open { get; } = Linear(new double[FeatureCount], 1);
 
         public double[] Weights => (double[])weights.Clone();
 
@@ -48,9 +70,36 @@ namespace HeadGait
         public double Score(SignalWindow window)
         {
             Features(window, features);
-            double z = weights[FeatureCount];
-            for (int i = 0; i < FeatureCount; i++) z += weights[i] * features[i];
+            return Score(weights, features, productInputs);
+        }
+
+        /// <summary>
+        /// The log-odds <paramref name="w"/> gives features <paramref name="f"/> (inputs in <see cref="InputCount"/> order);
+        /// <paramref name="g"/> is scratch for the products' inputs.
+        /// </summary>
+        static double Score(double[] w, double[] f, double[] g)
+        {
+            for (int i = 0; i < MultipliedCount; i++) g[i] = ProductInput(f, Multiplied[i]);
+            double z = w[InputCount];
+            for (int i = 0; i < FeatureCount; i++) z += w[i] * f[i];
+            int k = FeatureCount;
+            for (int i = 0; i < MultipliedCount; i++)
+                for (int j = i; j < MultipliedCount; j++) z += w[k++] * g[i] * g[j];
             return z;
+        }
+
+        /// <summary>Feature <paramref name="i"/> as the products read it: a spread for the log spreads, else as measured.</summary>
+        static double ProductInput(double[] f, int i) => i < LogSpreads ? Math.Exp(f[i]) : f[i];
+
+        /// <summary>The regression's inputs for features <paramref name="f"/> (as <see cref="Score(double[], double[], double[])"/> weighs them).</summary>
+        static double[] Inputs(double[] f)
+        {
+            var x = new double[InputCount];
+            Array.Copy(f, x, FeatureCount);
+            int k = FeatureCount;
+            for (int i = 0; i < MultipliedCount; i++)
+                for (int j = i; j < MultipliedCount; j++) x[k++] = ProductInput(f, Multiplied[i]) * ProductInput(f, Multiplied[j]);
+            return x;
         }
 
         public bool Passes(SignalWindow window) => Score(window) > 0;
@@ -111,8 +160,8 @@ namespace HeadGait
         public static WalkingGate Parse(string text)
         {
             var parts = (text ?? "").Split(',');
-            if (parts.Length != FeatureCount + 1 && parts.Length != FeatureCount)
-                throw new FormatException($"a walking gate has {FeatureCount + 1} comma-separated weights, found {parts.Length}");
+            if (parts.Length != WeightCount && Array.IndexOf(OlderLengths(), parts.Length) < 0)
+                throw new FormatException($"a walking gate has {WeightCount} comma-separated weights (or {LinearWeightCount} or {LinearWeightCount - 1} from an older model), found {parts.Length}");
             var w = new double[parts.Length];
             for (int i = 0; i < parts.Length; i++)
                 if (!double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out w[i]) || !ImuSample.IsFiniteNumber(w[i]) || Math.Abs(w[i]) > 1e4)
@@ -120,16 +169,30 @@ namespace HeadGait
             return FromWeights(w);
         }
 
+        /// <summary>Weights of a gate written before the pairwise products: the seven features and the bias.</summary>
+        public const int LinearWeightCount = FeatureCount + 1;
+
+        /// <summary>Shorter weight lists older models hold: the linear gate's, and the linear gate's before the autocorrelation input.</summary>
+        public static int[] OlderLengths() => new[] { LinearWeightCount, LinearWeightCount - 1 };
+
         /// <summary>
-        /// A gate from its weights as written: <see cref="FeatureCount"/> and the bias, or one fewer from a model written
-        /// before the autocorrelation input, which then weighs nothing and the gate decides as it did.
+        /// A gate from its weights as written (<see cref="WeightCount"/> or one of <see cref="OlderLengths"/>). An older linear gate weighs no products, and
+        /// one written before the autocorrelation input weighs that at nothing: either decides as it did.
         /// </summary>
         public static WalkingGate FromWeights(double[] w)
         {
-            if (w == null || w.Length != FeatureCount) return new WalkingGate(w);
-            var full = new double[FeatureCount + 1];
-            Array.Copy(w, full, FeatureCount - 1);
-            full[FeatureCount] = w[FeatureCount - 1];
+            if (w == null || w.Length == WeightCount) return new WalkingGate(w);
+            if (w.Length != LinearWeightCount && w.Length != LinearWeightCount - 1) return new WalkingGate(w); // refused, naming the count
+            var linear = new double[FeatureCount];
+            Array.Copy(w, linear, w.Length - 1);
+            return Linear(linear, w[w.Length - 1]);
+        }
+
+        static WalkingGate Linear(double[] featureWeights, double bias)
+        {
+            var full = new double[WeightCount];
+            Array.Copy(featureWeights, full, FeatureCount);
+            full[InputCount] = bias;
             return new WalkingGate(full);
         }
 
@@ -193,56 +256,73 @@ namespace HeadGait
                         if (row < 0 || !rows[row].HasTruth) return;
                         var f = new double[FeatureCount];
                         Features(w, f);
-                        (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(f);
+                        (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(Inputs(f));
                     });
                 }
             }
             if (walking.Count < 20 || standing.Count < 20)
                 throw new InvalidOperationException($"The walking gate needs walking and standing windows: found {walking.Count} and {standing.Count}.");
-            var w8 = Fit(walking, standing);
+            var weights = Fit(walking, standing);
             var scores = new List<double>();
-            foreach (var f in walking)
+            foreach (var x in walking)
             {
                 double z = 0;
-                for (int i = 0; i < FeatureCount; i++) z += w8[i] * f[i];
+                for (int i = 0; i < InputCount; i++) z += weights[i] * x[i];
                 scores.Add(z);
             }
             scores.Sort();
             var gates = new WalkingGate[walkingPasses.Count];
             for (int g = 0; g < gates.Length; g++)
             {
-                w8[FeatureCount] = -scores[(int)Math.Floor((1 - walkingPasses[g]) * (scores.Count - 1))] + 1e-9;
-                gates[g] = new WalkingGate(w8); // copies the weights
+                weights[InputCount] = -scores[(int)Math.Floor((1 - walkingPasses[g]) * (scores.Count - 1))] + 1e-9;
+                gates[g] = new WalkingGate(weights); // copies the weights
             }
             return gates;
         }
 
-        /// <summary>Balanced logistic regression by Newton's method (a 6x6 system), with a small ridge for stability.</summary>
+        /// <summary>
+        /// Balanced logistic regression by Newton's method on standardized inputs, with a small ridge (the products span
+        /// very different scales), returned as weights on the raw inputs; the bias is set by the caller.
+        /// </summary>
         static double[] Fit(List<double[]> positive, List<double[]> negative)
         {
-            int d = FeatureCount + 1;
-            var w = new double[d];
+            int n = InputCount, d = n + 1;
+            var mean = new double[n];
+            var sd = new double[n];
+            int total = positive.Count + negative.Count;
+            foreach (var x in positive) for (int i = 0; i < n; i++) mean[i] += x[i] / total;
+            foreach (var x in negative) for (int i = 0; i < n; i++) mean[i] += x[i] / total;
+            foreach (var x in positive) for (int i = 0; i < n; i++) sd[i] += (x[i] - mean[i]) * (x[i] - mean[i]) / total;
+            foreach (var x in negative) for (int i = 0; i < n; i++) sd[i] += (x[i] - mean[i]) * (x[i] - mean[i]) / total;
+            for (int i = 0; i < n; i++) sd[i] = sd[i] > 1e-12 ? Math.Sqrt(sd[i]) : 1;
+
+            var w = new double[d]; // standardized inputs, then the bias
+            var u = new double[d];
             double wp = 0.5 / positive.Count, wn = 0.5 / negative.Count;
             for (int iter = 0; iter < 30; iter++)
             {
                 var g = new double[d];
                 var h = new double[d, d];
-                void Add(double[] f, double y, double weight)
+                void Add(double[] x, double y, double weight)
                 {
-                    double z = w[d - 1];
-                    for (int i = 0; i < d - 1; i++) z += w[i] * f[i];
+                    for (int i = 0; i < n; i++) u[i] = (x[i] - mean[i]) / sd[i];
+                    u[n] = 1;
+                    double z = 0;
+                    for (int i = 0; i < d; i++) z += w[i] * u[i];
                     double p = 1 / (1 + Math.Exp(-z));
                     double r = weight * (p - y), s = weight * p * (1 - p);
                     for (int i = 0; i < d; i++)
                     {
-                        double fi = i < d - 1 ? f[i] : 1;
-                        g[i] += r * fi;
-                        for (int j = 0; j < d; j++) h[i, j] += s * fi * (j < d - 1 ? f[j] : 1);
+                        g[i] += r * u[i];
+                        double su = s * u[i];
+                        for (int j = i; j < d; j++) h[i, j] += su * u[j];
                     }
                 }
-                foreach (var f in positive) Add(f, 1, wp);
-                foreach (var f in negative) Add(f, 0, wn);
+                foreach (var x in positive) Add(x, 1, wp);
+                foreach (var x in negative) Add(x, 0, wn);
                 for (int i = 0; i < d; i++)
+                    for (int j = 0; j < i; j++) h[i, j] = h[j, i];
+                for (int i = 0; i < n; i++)
                 {
                     g[i] += 1e-4 * w[i];
                     h[i, i] += 1e-4;
@@ -256,7 +336,14 @@ namespace HeadGait
                 }
                 if (change < 1e-8) break;
             }
-            return w;
+            var raw = new double[d];
+            raw[n] = w[n];
+            for (int i = 0; i < n; i++)
+            {
+                raw[i] = w[i] / sd[i];
+                raw[n] -= raw[i] * mean[i];
+            }
+            return raw;
         }
 
         static double[] Solve(double[,] a, double[] b)
