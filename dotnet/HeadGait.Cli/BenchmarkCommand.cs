@@ -98,7 +98,7 @@ namespace HeadGait.Cli
                 if (poses.Count > 0)
                 {
                     Console.WriteLine();
-                    Console.WriteLine($"The same folds on {pooledPose.Values.Max(l => l.Count) / Math.Max(1, names.Count(n => pooledPose[n].Count > 0)) } head-pose recordings of held-out clips, through the XR pose path (tracked pose differentiated twice):");
+                    Console.WriteLine($"The same folds on {pooledPose.Values.Max(l => l.Count)} head-pose recordings of held-out clips, through the XR pose path (tracked pose differentiated twice):");
                     Report.PhaseHeader();
                     foreach (var name in names.Where(n => pooledPose[n].Count > 0))
                         foreach (var rate in pooledPose[name].GroupBy(r => RateOf(r.Recording)).OrderBy(g => g.Key))
