@@ -287,6 +287,34 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AStreamThatBeginsMidStepDatesItsFirstContactWhenItHappened()
+        {
+            // The first window arrives 0.49 s into the stream; SMV rose through the threshold at 0.40 s and is still up.
+            // Compared with the previous window only, that step would be taken as a contact at 0.49 s (or, read between the
+            // window's last two samples alone, missed); the first window looks back and dates it at 0.40 s.
+            var settings = ThresholdSettings.Parse(TestData.Threshold.Serialize());
+            settings.Gate = WalkingGate.Open;
+            Assert.That(settings.Floor, Is.LessThan(3));
+            var thr = new ThresholdClassifier(settings);
+            var contacts = new List<double>();
+            thr.ContactDetected += (t, e) => contacts.Add(t);
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+            for (int i = 0; i < 60; i++)
+                pre.Push(new ImuSample(0.01 * i, 0, 0, 9.80665 + (i >= 40 ? 3 : 0)), w => thr.Classify(w));
+            Assert.That(contacts.Count, Is.EqualTo(1));
+            Assert.That(contacts[0] + settings.ContactLag, Is.EqualTo(0.40).Within(0.011));
+
+            // Later windows read the crossing between their last two samples only: a rise 0.2 s later is a contact now.
+            contacts.Clear();
+            thr.Reset();
+            pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+            for (int i = 0; i < 120; i++)
+                pre.Push(new ImuSample(0.01 * i, 0, 0, 9.80665 + (i >= 80 ? 3 : 0)), w => thr.Classify(w));
+            Assert.That(contacts.Count, Is.EqualTo(1));
+            Assert.That(contacts[0] + settings.ContactLag, Is.EqualTo(0.80).Within(0.011));
+        }
+
+        [Test]
         public void FollowsACalmWalkerAsWellAsABouncyOne()
         {
             // The same walk at half its amplitude: a fixed threshold learned on the original would miss it. The committed

@@ -132,7 +132,7 @@ namespace HeadGait
         readonly ThresholdSettings settings;
         readonly StepClock clock;
         bool armed = true;
-        double lastSmv;
+        bool fresh = true; // no window classified since the start or the last reset
         double peakLevel;      // smoothed peak of recent steps
         double currentPeak;    // peak of the step being crossed
         bool inStep;
@@ -162,7 +162,7 @@ namespace HeadGait
         {
             clock.Reset();
             armed = true;
-            lastSmv = 0;
+            fresh = true;
             peakLevel = 0;
             currentPeak = 0;
             inStep = false;
@@ -192,13 +192,17 @@ namespace HeadGait
             bool moving = settings.Gate.Passes(window);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
-            bool crossed = armed && smv >= threshold && lastSmv < threshold && settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows);
-            lastSmv = smv;
+            // The crossing is read between the window's last two samples. The first window after a (re)start also looks
+            // back over its newest half second: a stream that begins mid-step crossed before it, and that contact is
+            // dated when it happened, not when the stream began.
+            int ago = CrossingAge(window, threshold, fresh ? (int)Math.Round(0.5 * window.SampleRate) : 1);
+            fresh = false;
+            bool crossed = armed && ago >= 0 && settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows);
             if (crossed)
             {
                 armed = false;
                 double evidence = SideEvidence(window);
-                double time = now - settings.ContactLag;
+                double time = now - ago / window.SampleRate - settings.ContactLag;
                 if (clock.Contact(time, evidence))
                 {
                     inStep = true;
@@ -208,6 +212,19 @@ namespace HeadGait
             }
             double confidence = clock.IsWalking(now) ? Math.Max(0, 1 - (now - clock.LastContactTime) / (settings.Clock.StandingAfterPeriods * clock.StepPeriod)) : 0;
             return clock.Predict(now, confidence);
+        }
+
+        /// <summary>Samples since SMV last rose through <paramref name="threshold"/> within the newest <paramref name="span"/> samples (0: just now), or -1.</summary>
+        static int CrossingAge(SignalWindow window, double threshold, int span)
+        {
+            int n = window.Length;
+            int valid = Math.Min(window.Count, n);
+            for (int k = 0; k < span && k + 2 <= valid; k++)
+            {
+                if (window.Smv[n - 1 - k] < threshold) return -1; // below now: any earlier crossing has ended
+                if (window.Smv[n - 2 - k] < threshold) return k;
+            }
+            return -1;
         }
 
         /// <summary>Pearson r of the newest second of lateral acceleration with the left-contact profile (its mean removes head tilt).</summary>
