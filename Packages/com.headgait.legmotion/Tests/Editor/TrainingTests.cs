@@ -222,6 +222,37 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AnEarLikeCopyIsSlowerAndSwaysLess()
+        {
+            var rec = TestData.Eval("walk_straight");
+            var ear = RecordingAugmentation.EarLike(rec);
+            Assert.That(ear.Name, Is.EqualTo(rec.Name), "scored as the same clip");
+            Assert.That(ear.Duration, Is.EqualTo(rec.Duration * RecordingAugmentation.EarLikeStretch).Within(0.02));
+            // Spread of what moves within a second (gravity and head tilt are left as they are), while walking.
+            double Spread(Recording r, Func<ImuSample, double> axis)
+            {
+                var v = r.Samples.ConvertAll(x => axis(x.Imu));
+                double m = 0, m2 = 0;
+                int n = 0;
+                for (int i = 50; i < v.Count - 50; i++)
+                {
+                    if (r.Samples[i].Left == GaitPhase.Standing) continue;
+                    double local = 0;
+                    for (int k = i - 50; k < i + 50; k++) local += v[k];
+                    double d = v[i] - local / 100;
+                    m += d;
+                    m2 += d * d;
+                    n++;
+                }
+                m /= n;
+                return Math.Sqrt(m2 / n - m * m);
+            }
+            double slower = 1 / (RecordingAugmentation.EarLikeStretch * RecordingAugmentation.EarLikeStretch);
+            Assert.That(Spread(ear, a => a.Z) / Spread(rec, a => a.Z), Is.EqualTo(slower).Within(0.1));
+            Assert.That(Spread(ear, a => a.Y) / Spread(rec, a => a.Y), Is.EqualTo(slower * RecordingAugmentation.EarLikeSidewaysGain).Within(0.1));
+        }
+
+        [Test]
         public void CopiesAreSeededByNameAndKeepTheirOriginalsName()
         {
             var a = GaitTraining.WithAugmentation(new[] { TestData.Eval("walk_straight") }, 3);

@@ -58,6 +58,25 @@ namespace HeadGait.Training
             => string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0}~t{1:F2}g{2:F2}f{3:F2}l{4:F2}", name, stretch, gain, forward, lateral);
 
         /// <summary>
+        /// How much slower and how much weaker sideways and forwards <see cref="EarLike"/> makes a recording. The issue's
+        /// real ear-worn sensor measured about half the sideways and forward acceleration of these mocap-derived signals,
+        /// and its wearer walked slower than the actors.
+        /// </summary>
+        public const double EarLikeStretch = 1.2, EarLikeSidewaysGain = 0.5;
+
+        /// <summary>
+        /// The recording as an ear-worn sensor on a slower walker might give it (the benchmark's <c>--ear-like</c>): time
+        /// stretched by <see cref="EarLikeStretch"/> with every dynamic part scaled by 1/stretch^2, as a walk slowed down
+        /// accelerates less, and the sideways and forward ones also by <see cref="EarLikeSidewaysGain"/>. Same name.
+        /// </summary>
+        public static Recording EarLike(Recording source)
+        {
+            double gain = 1 / (EarLikeStretch * EarLikeStretch);
+            return Transform(source, EarLikeStretch, gain * EarLikeSidewaysGain, gain * EarLikeSidewaysGain, gain,
+                new AugmentationSettings().SlowWindowSeconds, source.Name);
+        }
+
+        /// <summary>
         /// The deterministic core of <see cref="Augment"/>: stretches time by <paramref name="stretch"/> and multiplies the
         /// dynamic part of x (forward), y (lateral) and z (up) by the given gains.
         /// </summary>
