@@ -30,16 +30,16 @@ namespace HeadGait
         /// *active* style through with that style held out.
         /// </summary>
         static readonly int[] Multiplied = { 2, 3, 6 };
-        const int MultipliedCount = 3;
+        static readonly int MultipliedCount = Multiplied.Length;
 
         /// <summary>The regression's inputs: the features, then each product of two <see cref="Multiplied"/> ones (i &lt;= j).</summary>
-        public const int InputCount = FeatureCount + MultipliedCount * (MultipliedCount + 1) / 2;
+        public static readonly int InputCount = FeatureCount + MultipliedCount * (MultipliedCount + 1) / 2;
 
         /// <summary>Features that are log spreads (the first five); the products read them as spreads.</summary>
         const int LogSpreads = 5;
 
         /// <summary>Weights a gate has: one per input, then the bias.</summary>
-        public const int WeightCount = InputCount + 1;
+        public static readonly int WeightCount = InputCount + 1;
         const int Samples = 50;
 
         /// <summary>History the gate reads (grid samples at 100 Hz): the autocorrelation's second.</summary>
