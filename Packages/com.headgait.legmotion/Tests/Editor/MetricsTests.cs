@@ -33,6 +33,22 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AWalkBrokenIntoFragmentsCountsEachAsABout()
+        {
+            var t = new List<double>(); var l = new List<GaitPhase>(); var r = new List<GaitPhase>();
+            Labels(0, t, l, r);
+            var pl = new List<GaitPhase>(l); var pr = new List<GaitPhase>(r);
+            Assert.That(GaitMetrics.Compute(t, l, r, pl, pr).BoutsPerWalk, Is.EqualTo(1), "one walk shown as one");
+            // Standing shown for 0.2 s twice in the middle of the walk: three bouts where there was one.
+            foreach (int from in new[] { 400, 700 })
+                for (int i = from; i < from + 20; i++) pl[i] = pr[i] = GaitPhase.Standing;
+            var m = GaitMetrics.Compute(t, l, r, pl, pr);
+            Assert.That(m.TrueWalkingBouts, Is.EqualTo(1));
+            Assert.That(m.ShownWalkingBouts, Is.EqualTo(3));
+            Assert.That(GaitMetrics.Pool(new[] { m, m }).BoutsPerWalk, Is.EqualTo(3));
+        }
+
+        [Test]
         public void LatePredictionHasPositiveDelay()
         {
             var t = new List<double>(); var l = new List<GaitPhase>(); var r = new List<GaitPhase>();

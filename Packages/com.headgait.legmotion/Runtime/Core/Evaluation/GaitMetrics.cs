@@ -15,6 +15,7 @@ namespace HeadGait
         long samples, wrongLeft, wrongRight, wrongBeyondAdjacent, activityWrong;
         readonly long[] errorHistogram = new long[GaitPhases.WalkingPhaseCount / 2 + 1];
         long walkingSamples, walkingShownStanding, standingSamples, standingShownWalking;
+        int trueBouts, shownBouts;
         readonly List<double> onsetDelaysMs = new List<double>();
         readonly List<double> icOnsetDelaysMs = new List<double>();
         int trueOnsets;
@@ -41,6 +42,15 @@ namespace HeadGait
 
         /// <summary>Share of truly standing samples predicted (or shown) as walking.</summary>
         public double StandingAsWalking => Ratio(standingShownWalking, standingSamples);
+
+        /// <summary>
+        /// Walking bouts shown per true walking bout: each run of samples predicted (or shown) as walking is one bout.
+        /// 1 when every walk shows as one; a walk that breaks apart, or gesturing shown as walking, adds bouts.
+        /// </summary>
+        public double BoutsPerWalk => Ratio(shownBouts, trueBouts);
+
+        public int TrueWalkingBouts => trueBouts;
+        public int ShownWalkingBouts => shownBouts;
 
         public long WalkingSamples => walkingSamples;
         public long StandingSamples => standingSamples;
@@ -157,6 +167,8 @@ namespace HeadGait
                 }
             }
             samples += n;
+            trueBouts += Bouts(trueLeft);
+            shownBouts += Bouts(predLeft);
             AddOnsetDelays(times, trueLeft, trueRight, predLeft, predRight);
             AddSteps(times, trueLeft, trueRight, predLeft, predRight);
         }
@@ -178,6 +190,8 @@ namespace HeadGait
                 m.walkingShownStanding += p.walkingShownStanding;
                 m.standingSamples += p.standingSamples;
                 m.standingShownWalking += p.standingShownWalking;
+                m.trueBouts += p.trueBouts;
+                m.shownBouts += p.shownBouts;
                 m.onsetDelaysMs.AddRange(p.onsetDelaysMs);
                 m.icOnsetDelaysMs.AddRange(p.icOnsetDelaysMs);
                 m.trueOnsets += p.trueOnsets;
@@ -188,6 +202,20 @@ namespace HeadGait
                 m.stepTimingMs.AddRange(p.stepTimingMs);
             }
             return m;
+        }
+
+        /// <summary>Runs of walking (any phase but standing) in one foot's sequence.</summary>
+        static int Bouts(IReadOnlyList<GaitPhase> phases)
+        {
+            int bouts = 0;
+            bool walking = false;
+            foreach (var p in phases)
+            {
+                bool now = p != GaitPhase.Standing;
+                if (now && !walking) bouts++;
+                walking = now;
+            }
+            return bouts;
         }
 
         void AddOnsetDelays(IReadOnlyList<double> times,

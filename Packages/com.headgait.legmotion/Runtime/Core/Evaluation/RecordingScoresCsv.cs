@@ -10,7 +10,7 @@ namespace HeadGait
     /// </summary>
     public static class RecordingScoresCsv
     {
-        public const string Header = "scheme,fold,recording,classifier,output,samples,miscl,beyond_adjacent,walking_samples,walking_as_standing,standing_samples,standing_as_walking,true_steps,predicted_steps,matched_steps,right_foot";
+        public const string Header = "scheme,fold,recording,classifier,output,samples,miscl,beyond_adjacent,walking_samples,walking_as_standing,standing_samples,standing_as_walking,true_steps,predicted_steps,matched_steps,right_foot,true_walking_bouts,shown_walking_bouts";
 
         /// <summary>A held-out recording's replay and the cross-validation fold that held it out.</summary>
         public struct Row
@@ -39,7 +39,8 @@ namespace HeadGait
                 m.WalkingSamples.ToString(CultureInfo.InvariantCulture), Share(m.WalkingAsStanding),
                 m.StandingSamples.ToString(CultureInfo.InvariantCulture), Share(m.StandingAsWalking),
                 m.TrueSteps.ToString(CultureInfo.InvariantCulture), m.PredictedSteps.ToString(CultureInfo.InvariantCulture),
-                m.MatchedSteps.ToString(CultureInfo.InvariantCulture), Share(m.StepRightFoot)));
+                m.MatchedSteps.ToString(CultureInfo.InvariantCulture), Share(m.StepRightFoot),
+                m.TrueWalkingBouts.ToString(CultureInfo.InvariantCulture), m.ShownWalkingBouts.ToString(CultureInfo.InvariantCulture)));
         }
 
         // Empty where there is nothing to divide by (no standing in a walking clip), so no one averages a NaN.
