@@ -51,7 +51,7 @@ namespace HeadGait
 
         readonly double[] weights; // InputCount weights, then the bias
         readonly double[] features = new double[FeatureCount];
-        readonly double[] productInputs = new double[MultipliedCount];
+        readonly double[] inputs = new double[InputCount];
 
         public WalkingGate(double[] weights)
         {
@@ -70,36 +70,30 @@ namespace HeadGait
         public double Score(SignalWindow window)
         {
             Features(window, features);
-            return Score(weights, features, productInputs);
+            FillInputs(features, inputs);
+            return LogOdds(weights, inputs);
         }
 
-        /// <summary>
-        /// The log-odds <paramref name="w"/> gives features <paramref name="f"/> (inputs in <see cref="InputCount"/> order);
-        /// <paramref name="g"/> is scratch for the products' inputs.
-        /// </summary>
-        static double Score(double[] w, double[] f, double[] g)
+        /// <summary>The log-odds weights <paramref name="w"/> give inputs <paramref name="x"/> (<see cref="InputCount"/> of them).</summary>
+        static double LogOdds(double[] w, double[] x)
         {
-            for (int i = 0; i < MultipliedCount; i++) g[i] = ProductInput(f, Multiplied[i]);
             double z = w[InputCount];
-            for (int i = 0; i < FeatureCount; i++) z += w[i] * f[i];
-            int k = FeatureCount;
-            for (int i = 0; i < MultipliedCount; i++)
-                for (int j = i; j < MultipliedCount; j++) z += w[k++] * g[i] * g[j];
+            for (int i = 0; i < InputCount; i++) z += w[i] * x[i];
             return z;
         }
 
         /// <summary>Feature <paramref name="i"/> as the products read it: a spread for the log spreads, else as measured.</summary>
         static double ProductInput(double[] f, int i) => i < LogSpreads ? Math.Exp(f[i]) : f[i];
 
-        /// <summary>The regression's inputs for features <paramref name="f"/> (as <see cref="Score(double[], double[], double[])"/> weighs them).</summary>
-        static double[] Inputs(double[] f)
+        /// <summary>The regression's inputs for features <paramref name="f"/>, into <paramref name="x"/>: the features, then the products.</summary>
+        static void FillInputs(double[] f, double[] x)
         {
-            var x = new double[InputCount];
             Array.Copy(f, x, FeatureCount);
+            Span<double> g = stackalloc double[MultipliedCount];
+            for (int i = 0; i < MultipliedCount; i++) g[i] = ProductInput(f, Multiplied[i]);
             int k = FeatureCount;
             for (int i = 0; i < MultipliedCount; i++)
-                for (int j = i; j < MultipliedCount; j++) x[k++] = ProductInput(f, Multiplied[i]) * ProductInput(f, Multiplied[j]);
-            return x;
+                for (int j = i; j < MultipliedCount; j++) x[k++] = g[i] * g[j];
         }
 
         public bool Passes(SignalWindow window) => Score(window) > 0;
@@ -257,20 +251,18 @@ namespace HeadGait
                         if (row < 0 || !rows[row].HasTruth) return;
                         var f = new double[FeatureCount];
                         Features(w, f);
-                        (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(Inputs(f));
+                        var x = new double[InputCount];
+                        FillInputs(f, x);
+                        (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(x);
                     });
                 }
             }
             if (walking.Count < 20 || standing.Count < 20)
                 throw new InvalidOperationException($"The walking gate needs walking and standing windows: found {walking.Count} and {standing.Count}.");
             var weights = Fit(walking, standing);
+            weights[InputCount] = 0; // the bias comes from the walking windows' scores below
             var scores = new List<double>();
-            foreach (var x in walking)
-            {
-                double z = 0;
-                for (int i = 0; i < InputCount; i++) z += weights[i] * x[i];
-                scores.Add(z);
-            }
+            foreach (var x in walking) scores.Add(LogOdds(weights, x));
             scores.Sort();
             var gates = new WalkingGate[walkingPasses.Count];
             for (int g = 0; g < gates.Length; g++)
@@ -291,10 +283,9 @@ namespace HeadGait
             var mean = new double[n];
             var sd = new double[n];
             int total = positive.Count + negative.Count;
-            foreach (var x in positive) for (int i = 0; i < n; i++) mean[i] += x[i] / total;
-            foreach (var x in negative) for (int i = 0; i < n; i++) mean[i] += x[i] / total;
-            foreach (var x in positive) for (int i = 0; i < n; i++) sd[i] += (x[i] - mean[i]) * (x[i] - mean[i]) / total;
-            foreach (var x in negative) for (int i = 0; i < n; i++) sd[i] += (x[i] - mean[i]) * (x[i] - mean[i]) / total;
+            var both = new[] { positive, negative };
+            foreach (var set in both) foreach (var x in set) for (int i = 0; i < n; i++) mean[i] += x[i] / total;
+            foreach (var set in both) foreach (var x in set) for (int i = 0; i < n; i++) sd[i] += (x[i] - mean[i]) * (x[i] - mean[i]) / total;
             for (int i = 0; i < n; i++) sd[i] = sd[i] > 1e-12 ? Math.Sqrt(sd[i]) : 1;
 
             var w = new double[d]; // standardized inputs, then the bias
