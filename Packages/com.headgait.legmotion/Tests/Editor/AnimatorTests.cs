@@ -26,6 +26,15 @@ namespace HeadGait.Tests
             return f;
         }
 
+        /// <summary>The frames of a fresh animator fed n predictions of steady walking from stride position s0.</summary>
+        static List<AnimatorFrame> FramesFromStanding(double s0, int n)
+        {
+            var frames = new List<AnimatorFrame>();
+            double t = 0;
+            WalkFor(new GaitAnimatorStateMachine(Map), ref t, s0, n, frames);
+            return frames;
+        }
+
         [Test]
         public void StartsWithTheFootThatIsInSwing()
         {
@@ -48,30 +57,21 @@ namespace HeadGait.Tests
         {
             // The right foot landed at s = 0.5 and the walk is recognised a little after: the avatar swings that foot in
             // and lands it, instead of planting it straight from standing (the step would not be seen).
-            var a = new GaitAnimatorStateMachine(Map);
-            double t = 0;
-            var frames = new List<AnimatorFrame>();
-            WalkFor(a, ref t, 0.505, 20, frames);
+            var frames = FramesFromStanding(0.505, 20);
             int start = frames.FindIndex(f => f.State != LocomotionState.Standing);
             Assert.That(frames[start].State, Is.EqualTo(LocomotionState.StartWalkRight));
             Assert.That(frames[start].Right, Is.EqualTo(GaitPhase.TerminalSwing));
             Assert.That(frames.FindIndex(start, f => f.Right == GaitPhase.InitialContact), Is.GreaterThan(start));
 
             // Recognised later than StartLookBack after that contact: the left foot, in swing, leads as before.
-            var b = new GaitAnimatorStateMachine(Map);
-            t = 0;
-            frames.Clear();
-            WalkFor(b, ref t, 0.5 + new AnimatorSettings().StartLookBack + 0.02, 20, frames);
+            frames = FramesFromStanding(0.5 + new AnimatorSettings().StartLookBack + 0.02, 20);
             Assert.That(frames.Find(f => f.State != LocomotionState.Standing).State, Is.EqualTo(LocomotionState.StartWalkLeft));
         }
 
         [Test]
         public void StartClipEndsWhenTheLeadFootLands()
         {
-            var a = new GaitAnimatorStateMachine(Map);
-            double t = 0;
-            var frames = new List<AnimatorFrame>();
-            WalkFor(a, ref t, 0.62, 80, frames);
+            var frames = FramesFromStanding(0.62, 80);
             int landing = frames.FindIndex(f => f.State == LocomotionState.Walking);
             Assert.That(landing, Is.GreaterThan(0));
             // Walking begins at the left initial contact (s wraps to ~0), ~0.38 strides after the start.
