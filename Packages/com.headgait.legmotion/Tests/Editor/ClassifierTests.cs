@@ -129,18 +129,34 @@ namespace HeadGait.Tests
             Assert.That(cor.Clock.StepPeriod, Is.EqualTo(0.55).Within(0.02));
         }
 
-        [Test]
-        public void StartsWalkingWithinTheFirstWindowOfAWalk()
+        /// <summary>When COR first shows walking on a walk of the template's own steps (NaN: never).</summary>
+        static double FirstWalking(CorrelationSettings settings = null)
         {
             var t = TestData.Template.With(gate: WalkingGate.Open);
-            var pipeline = new GaitPipeline(new CorrelationClassifier(t));
+            var pipeline = new GaitPipeline(new CorrelationClassifier(t, settings));
             double firstWalking = double.NaN;
             pipeline.FrameProduced += (p, f) =>
             {
                 if (p.IsWalking && double.IsNaN(firstWalking)) firstWalking = p.Time;
             };
             foreach (var s in TemplateWalk(t, 5, out _)) pipeline.Push(s);
-            Assert.That(firstWalking, Is.LessThan(0.6), "the standing search recognises the step in the first 0.5 s window");
+            return firstWalking;
+        }
+
+        [Test]
+        public void StartsWalkingWithinTheFirstWindowOfAWalk()
+        {
+            Assert.That(FirstWalking(), Is.LessThan(0.6), "the standing search recognises the step in the first 0.5 s window");
+        }
+
+        [Test]
+        public void TheStandingSearchMarginIsASetting()
+        {
+            // Off (negative), walking waits for a correlation peak at a contact; a margin no r can clear (r <= 1) is the same as off.
+            double searched = FirstWalking(), off = FirstWalking(new CorrelationSettings { StartMargin = -1 });
+            double unreachable = FirstWalking(new CorrelationSettings { StartMargin = 1 });
+            Assert.That(off, Is.GreaterThan(searched + 0.05));
+            Assert.That(unreachable, Is.EqualTo(off));
         }
 
         [Test]
