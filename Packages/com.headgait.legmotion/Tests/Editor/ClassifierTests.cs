@@ -331,6 +331,43 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AContactIsDatedWhereSmvRoseThroughGravity()
+        {
+            // SMV - g sits at -1, then rises by 0.2 per sample from 0.80 s: above 0 from 0.85 s, above the floor (under 1)
+            // from 0.88 s. The contact is dated at the rise through 0; with no dating level, at the threshold crossing.
+            double DatedAt(double datingLevel)
+            {
+                var settings = ThresholdSettings.Parse(TestData.Threshold.Serialize());
+                settings.Gate = WalkingGate.Open;
+                settings.DatingLevel = datingLevel;
+                Assert.That(settings.Floor, Is.InRange(0.1, 0.9));
+                var thr = new ThresholdClassifier(settings);
+                var contacts = new List<double>();
+                thr.ContactDetected += (t, e) => contacts.Add(t + settings.ContactLag);
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+                for (int i = 0; i < 120; i++)
+                    pre.Push(new ImuSample(0.01 * i, 0, 0, 9.80665 + (i < 80 ? -1 : Math.Min(3, -0.9 + 0.2 * (i - 80)))), w => thr.Classify(w));
+                Assert.That(contacts.Count, Is.EqualTo(1));
+                return contacts[0];
+            }
+            Assert.That(DatedAt(0), Is.EqualTo(0.85).Within(0.006));
+            Assert.That(DatedAt(double.NaN), Is.EqualTo(Math.Round(0.80 + 0.01 * Math.Ceiling((TestData.Threshold.Floor + 0.9) / 0.2), 2)).Within(0.006));
+        }
+
+        [Test]
+        public void ThresholdFilesWithoutADatingLevelDateAtTheCrossing()
+        {
+            // Their contact lag was measured at the crossing.
+            var s = TestData.Threshold;
+            Assert.That(s.DatingLevel, Is.EqualTo(0));
+            string text = s.Serialize();
+            int at = text.IndexOf("dating_level=", StringComparison.Ordinal), end = text.IndexOf('\n', at);
+            var old = ThresholdSettings.Parse(text.Remove(at, end - at + 1), "thr.txt");
+            Assert.That(old.DatingLevel, Is.NaN);
+            Assert.That(ThresholdSettings.Parse(text).DatingLevel, Is.EqualTo(0));
+        }
+
+        [Test]
         public void FollowsACalmWalkerAsWellAsABouncyOne()
         {
             // The same walk at half its amplitude: a fixed threshold learned on the original would miss it. The committed
