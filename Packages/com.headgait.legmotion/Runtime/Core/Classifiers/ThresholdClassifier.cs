@@ -16,7 +16,8 @@ namespace HeadGait
 
         /// <summary>
         /// The threshold also follows the walker: this fraction of the recent step peaks. A fixed level learned from bouncy
-        /// training walkers would never be crossed by calm ones.
+        /// training walkers would never be crossed by calm ones. With contacts dated at <see cref="DatingLevel"/>, style CV:
+        /// 0.35 gave 27.7 % misclassification but step precision 94.7 %, 0.45 28.2 % and 95.2 %, 0.55 29.0 %.
         /// </summary>
         public double PeakFraction = 0.45;
 
