@@ -355,6 +355,34 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AnAccelerometerScaleErrorBarelyMovesTheDatedContacts()
+        {
+            // Contacts are dated at SMV rising through 1 g, an absolute level: a sensor reading 3 % high or low shifts SMV - g
+            // by about 0.3 m/s^2. The committed THR (trained on people) on the generated walker, scaled both ways.
+            var thr = ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile));
+            var rec = TestData.Eval("walk_straight");
+            Recording Scaled(double k)
+            {
+                var rows = new List<RecordedSample>();
+                foreach (var r in rec.Samples)
+                {
+                    var imu = new ImuSample(r.Imu.Time, k * r.Imu.X, k * r.Imu.Y, k * r.Imu.Z);
+                    rows.Add(r.HasTruth ? new RecordedSample(imu, r.Left, r.Right) : new RecordedSample(imu));
+                }
+                return new Recording(rec.Name, rows);
+            }
+            var exact = ReplayEvaluator.Run(rec, new ThresholdClassifier(thr)).ClassifierMetrics;
+            foreach (double k in new[] { 0.97, 1.03 })
+            {
+                var m = ReplayEvaluator.Run(Scaled(k), new ThresholdClassifier(thr)).ClassifierMetrics;
+                Assert.That(m.StepRecall, Is.GreaterThan(exact.StepRecall - 0.03), $"scale {k}");
+                Assert.That(m.MisclassificationRate, Is.LessThan(exact.MisclassificationRate + 0.03), $"scale {k}");
+                Assert.That(Math.Abs(m.StepTimingMeanMs - exact.StepTimingMeanMs), Is.LessThan(15), $"scale {k}");
+                TestContext.WriteLine($"scale {k}: recall {m.StepRecall:P1}, misclassification {m.MisclassificationRate:P1}, contacts {m.StepTimingMeanMs:F0} ms (exact: {exact.StepRecall:P1}, {exact.MisclassificationRate:P1}, {exact.StepTimingMeanMs:F0} ms)");
+            }
+        }
+
+        [Test]
         public void ThresholdFilesWithoutADatingLevelDateAtTheCrossing()
         {
             // Their contact lag was measured at the crossing.
