@@ -37,22 +37,6 @@ namespace HeadGait.Training
         {
             try
             {
-                var gc = Environment.GetEnvironmentVariable("HG_GC");
-                if (gc != null)
-                {
-                    var parts = gc.Split(',');
-                    int copies = int.Parse(parts[0]);
-                    double lo = double.Parse(parts[1], System.Globalization.CultureInfo.InvariantCulture), hi = double.Parse(parts[2], System.Globalization.CultureInfo.InvariantCulture);
-                    var calm = new AugmentationSettings { MinLateralScale = lo, MaxLateralScale = hi, MinForwardScale = lo, MaxForwardScale = hi };
-                    var list = new List<Recording>(training);
-                    foreach (var rec in training)
-                    {
-                        if (!rec.HasTruth || rec.Name.Contains("~")) continue;
-                        var random = new DeterministicRandom(7 ^ DeterministicRandom.SeedFrom(rec.Name));
-                        for (int k = 0; k < copies; k++) list.Add(RecordingAugmentation.Augment(rec, random, calm));
-                    }
-                    training = list;
-                }
                 var gates = WalkingGate.TrainEach(training, new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass });
                 return (gates[0], gates[1]);
             }
