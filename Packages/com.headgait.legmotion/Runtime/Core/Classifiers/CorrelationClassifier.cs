@@ -417,17 +417,11 @@ namespace HeadGait
                 all.Add(offset);
             });
             if (all.Count < 8) return thresholded;
-            double overall = Median(all);
+            double overall = GaitMetrics.Median(all);
             var calibrated = new List<StepTemplate>();
             for (int k = 0; k < lags.Length; k++)
-                calibrated.Add(thresholded.Templates[k].WithLag(Math.Max(-0.45, Math.Min(0.45, lags[k].Count >= 8 ? Median(lags[k]) : overall))));
+                calibrated.Add(thresholded.Templates[k].WithLag(Math.Max(-0.45, Math.Min(0.45, lags[k].Count >= 8 ? GaitMetrics.Median(lags[k]) : overall))));
             return thresholded.With(templates: calibrated);
-        }
-
-        static double Median(List<double> v)
-        {
-            v.Sort();
-            return v[v.Count / 2];
         }
 
         /// <summary>Replays each recording and reports, for every contact the clock takes, its offset from the nearest true contact and its r.</summary>

@@ -343,18 +343,9 @@ namespace HeadGait
                     if (Math.Abs(nearest) <= 0.2) lags.Add(nearest);
                 }
             }
-            if (lags.Count >= 8)
-            {
-                lags.Sort();
-                s.ContactLag = Math.Max(-0.45, Math.Min(0.45, lags[lags.Count / 2]));
-            }
+            if (lags.Count >= 8) s.ContactLag = Math.Max(-0.45, Math.Min(0.45, GaitMetrics.Median(lags)));
             // The profile ends where contacts are detected: the dated contact plus how much earlier than its crossing it was dated.
-            double shift = 0;
-            if (shifts.Count > 0)
-            {
-                shifts.Sort();
-                shift = shifts[shifts.Count / 2];
-            }
+            double shift = shifts.Count > 0 ? GaitMetrics.Median(shifts) : 0;
             var profile = new double[ThresholdSettings.ProfileSamples];
             var segment = new double[profile.Length];
             int used = 0;

@@ -295,7 +295,8 @@ namespace HeadGait
             return s / v.Count;
         }
 
-        static double Median(List<double> v)
+        /// <summary>The upper median (the middle value, the higher of two); NaN when there are none. Leaves the list as it is.</summary>
+        public static double Median(List<double> v)
         {
             if (v.Count == 0) return double.NaN;
             var sorted = new List<double>(v);
