@@ -359,7 +359,7 @@ namespace HeadGait.Tests
         {
             // Contacts are dated at SMV rising through 1 g, an absolute level: a sensor reading 3 % high or low shifts SMV - g
             // by about 0.3 m/s^2. The committed THR (trained on people) on the generated walker, scaled both ways.
-            var thr = ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile));
+            var thr = TestData.CommittedThreshold;
             var rec = TestData.Eval("walk_straight");
             Recording Scaled(double k)
             {
@@ -401,7 +401,7 @@ namespace HeadGait.Tests
             // The same walk at half its amplitude: a fixed threshold learned on the original would miss it. The committed
             // THR (trained on people) is used: the generator's standing nods swing at step frequency, so a walking gate
             // trained on generated data can tell them from steps only by their size, and refuses a calm walker too.
-            var thr = ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile));
+            var thr = TestData.CommittedThreshold;
             var rec = TestData.Eval("walk_straight");
             var calm = Training.RecordingAugmentation.Transform(rec, 1.0, 0.5, 0.5, 0.5, 1.0, "calm");
             var normal = ReplayEvaluator.Run(rec, new ThresholdClassifier(thr));

@@ -27,6 +27,10 @@ namespace HeadGait.Tests
 
         public static Recording Eval(string name) => Load(Path.Combine(Folder, "eval", name + ".csv"));
 
+        /// <summary>The package's committed THR (trained on people), read afresh so a test may change it.</summary>
+        public static ThresholdSettings CommittedThreshold
+            => ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile));
+
         public static Recording Load(string path)
         {
             lock (Cache)

@@ -102,7 +102,7 @@ namespace HeadGait.Tests
             // recorded one; people's walks 1-3.5), while the head bobs at walking cadence (2 Hz). A gate linear in the
             // features took more movement for more walking and let all of it through (the committed linear gate passed
             // every window); the committed gate, with the products, refuses most of it and still passes a generated walk.
-            var gate = ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile)).Gate;
+            var gate = TestData.CommittedThreshold.Gate;
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
             var waveScores = new List<double>();
             for (int i = 0; i < 400; i++)
