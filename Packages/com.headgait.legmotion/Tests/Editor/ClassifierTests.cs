@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
 using HeadGait.Synthetic;
 using NUnit.Framework;
 
