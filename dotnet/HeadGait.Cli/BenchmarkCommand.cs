@@ -64,8 +64,8 @@ namespace HeadGait.Cli
                     var foldModels = new GaitModels();
                     // Every classifier's walking gate, trained on the fold's training recordings as `headgait train` does.
                     var gates = GaitTraining.TrainGates(augmented);
-                    if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Detectors);
-                    if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Detectors);
+                    if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Threshold);
+                    if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Correlation);
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
                     foldModels.Svm = learned?.Svm;

@@ -55,12 +55,13 @@ namespace HeadGait.Cli
                 var gates = onlyFolds ? default : GaitTraining.TrainGates(training);
                 if (!onlyFolds)
                 {
-                    var gate = gates.Detectors;
-                    var thr = GaitTraining.TrainThreshold(training, map, gate);
+                    var thr = GaitTraining.TrainThreshold(training, map, gates.Threshold);
                     thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
-                    Console.WriteLine($"walking gate (log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g, SMV's autocorrelation half a step (0.25 s) apart over 1 s, then their pairwise products; bias): {gate.Serialize()}");
+                    Console.WriteLine("walking gates: log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g, SMV's autocorrelation half a step (0.25 s) apart over 1 s, then their pairwise products; bias");
+                    Console.WriteLine($"THR's walking gate (also fitted on {GaitTraining.CalmGateCopies} calm-swaying copies of each recording; {100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Threshold.Serialize()}");
                     Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
-                    var cor = GaitTraining.TrainCorrelation(training, map, gate);
+                    Console.WriteLine($"COR's walking gate ({100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Correlation.Serialize()}");
+                    var cor = GaitTraining.TrainCorrelation(training, map, gates.Correlation);
                     cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
                     Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms");
                 }
@@ -75,7 +76,7 @@ namespace HeadGait.Cli
                 var spec = WindowFeatures.Parse(parse.GetValue(features));
                 var names = recordings.Select(r => r.Name).ToList();
                 var index = names.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => p.i);
-                var items = training.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[OriginalName(r.Name)], Augmented = r.Name.Contains('~') }).ToList();
+                var items = training.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name) }).ToList();
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir, parse.GetValue(lead));
                 Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}; {summary.Unlabelled} have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
@@ -124,13 +125,6 @@ namespace HeadGait.Cli
                 && File.ReadAllLines(exclude).SequenceEqual(held);
         }
 
-        /// <summary>Augmented copies are named "original~...": they belong to their original's fold.</summary>
-        public static string OriginalName(string name)
-        {
-            int tilde = name.IndexOf('~');
-            return tilde < 0 ? name : name.Substring(0, tilde);
-        }
-
         public static string Safe(string foldName) => foldName.Replace('/', '_');
 
         static string FindScript()
@@ -173,7 +167,7 @@ namespace HeadGait.Cli
             foreach (var path in files) GaitTraining.WriteGateAndStance(path, gate, map);
             Console.WriteLine(gate == null
                 ? $"no standing in the recordings: {string.Join(", ", files.Select(Path.GetFileName))} run without a walking gate"
-                : $"walking gate of {string.Join(" and ", files.Select(Path.GetFileName))} ({100 * WalkingGate.LearnedPass:F1} % of walking windows pass): {gate.Serialize()}");
+                : $"walking gate of {string.Join(" and ", files.Select(Path.GetFileName))} (also fitted on {GaitTraining.CalmGateCopies} calm-swaying copies of each recording; {100 * WalkingGate.LearnedPass:F1} % of walking windows pass): {gate.Serialize()}");
         }
 
         /// <summary>The package's C# forward passes must reproduce what the training framework computed for the reference windows.</summary>

@@ -43,9 +43,9 @@ namespace HeadGait.Editor
                 foreach (var f in Directory.GetFiles(folder, "*.csv")) recordings.Add(RecordingCsv.Load(f));
                 var training = HeadGait.Training.GaitTraining.WithAugmentation(recordings, HeadGait.Training.GaitTraining.DefaultAugmentedCopies);
                 var map = HeadGait.Training.PhaseMapTraining.Learn(recordings);
-                var gate = HeadGait.Training.GaitTraining.TrainGate(training);
-                HeadGait.Training.GaitTraining.TrainThreshold(training, map, gate).Save(Path.Combine(output, GaitModels.ThresholdFile));
-                var template = HeadGait.Training.GaitTraining.TrainCorrelation(training, map, gate);
+                var gates = HeadGait.Training.GaitTraining.TrainGates(training);
+                HeadGait.Training.GaitTraining.TrainThreshold(training, map, gates.Threshold).Save(Path.Combine(output, GaitModels.ThresholdFile));
+                var template = HeadGait.Training.GaitTraining.TrainCorrelation(training, map, gates.Correlation);
                 template.Save(Path.Combine(output, GaitModels.CorrelationFile));
                 Debug.Log($"HeadGait: wrote THR and COR into {output} from {recordings.Count} recordings ({template.StepsUsed} steps). SVM and BLSTM train with `headgait train` (Python).");
                 AssetDatabase.Refresh();

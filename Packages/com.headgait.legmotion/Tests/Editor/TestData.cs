@@ -11,7 +11,7 @@ namespace HeadGait.Tests
         static readonly Dictionary<string, Recording> Cache = new Dictionary<string, Recording>();
         static CorrelationTemplate template;
         static ThresholdSettings threshold;
-        static WalkingGate gate;
+        static global::HeadGait.Training.TrainedGates? gates;
         static PhaseMap map;
         static List<Recording> training;
 
@@ -70,13 +70,14 @@ namespace HeadGait.Tests
         /// <summary>The phase map learned from the generated training recordings.</summary>
         public static PhaseMap Map => map ?? (map = global::HeadGait.Training.PhaseMapTraining.Learn(TrainingSet));
 
-        public static WalkingGate Gate => gate ?? (gate = global::HeadGait.Training.GaitTraining.TrainGate(TrainingSet));
+        /// <summary>Every classifier's walking gate, trained as `headgait train` does on the generated training recordings.</summary>
+        public static global::HeadGait.Training.TrainedGates Gates => gates ?? (gates = global::HeadGait.Training.GaitTraining.TrainGates(TrainingSet)).Value;
 
         /// <summary>COR trained as `headgait train` does, on the generated training recordings.</summary>
-        public static CorrelationTemplate Template => template ?? (template = global::HeadGait.Training.GaitTraining.TrainCorrelation(TrainingSet, Map, Gate));
+        public static CorrelationTemplate Template => template ?? (template = global::HeadGait.Training.GaitTraining.TrainCorrelation(TrainingSet, Map, Gates.Correlation));
 
         /// <summary>THR trained as `headgait train` does, on the generated training recordings.</summary>
-        public static ThresholdSettings Threshold => threshold ?? (threshold = global::HeadGait.Training.GaitTraining.TrainThreshold(TrainingSet, Map, Gate));
+        public static ThresholdSettings Threshold => threshold ?? (threshold = global::HeadGait.Training.GaitTraining.TrainThreshold(TrainingSet, Map, Gates.Threshold));
 
         /// <summary>
         /// The generated training recordings with augmented copies, as `headgait train` makes them; eight per recording

@@ -10,15 +10,15 @@ namespace HeadGait.Tests
     public class WalkingGateTrainingTests
     {
         [Test]
-        public void OneFitGivesEachClassifiersGateAsItsOwnTrainingWould()
+        public void EveryGateButCorsAlsoLearnsFromCalmCopies()
         {
             var training = TestData.Training;
             var gates = GaitTraining.TrainGates(training);
-            Assert.That(gates.Detectors.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.DetectorPass).Weights));
-            Assert.That(gates.Learned.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.LearnedPass).Weights));
-            // Same regression, a bias letting more walking through.
-            for (int i = 0; i < WalkingGate.InputCount; i++) Assert.That(gates.Learned.Weights[i], Is.EqualTo(gates.Detectors.Weights[i]));
-            Assert.That(gates.Learned.Weights[WalkingGate.InputCount], Is.GreaterThan(gates.Detectors.Weights[WalkingGate.InputCount]));
+            var withCalm = GaitTraining.WithCalmCopies(training);
+            Assert.That(gates.Threshold.Weights, Is.EqualTo(WalkingGate.Train(withCalm, WalkingGate.DetectorPass).Weights));
+            Assert.That(gates.Correlation.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.DetectorPass).Weights));
+            Assert.That(gates.Learned.Weights, Is.EqualTo(WalkingGate.Train(withCalm, WalkingGate.LearnedPass).Weights));
+            Assert.That(gates.Threshold.Weights, Is.Not.EqualTo(gates.Correlation.Weights), "the calm copies change the fit");
         }
 
         /// <summary>The gate's inputs on the newest window of a head-acceleration stream.</summary>
@@ -221,6 +221,47 @@ namespace HeadGait.Tests
             Assert.That(Spread(slow), Is.EqualTo(0.5 * Spread(rec)).Within(0.1 * Spread(rec)));
         }
 
+        /// <summary>Spread of what moves within a second (gravity and head tilt are left as they are), while walking.</summary>
+        static double Spread(Recording r, Func<ImuSample, double> axis)
+        {
+            var v = r.Samples.ConvertAll(x => axis(x.Imu));
+            double m = 0, m2 = 0;
+            int n = 0;
+            for (int i = 50; i < v.Count - 50; i++)
+            {
+                if (r.Samples[i].Left == GaitPhase.Standing) continue;
+                double local = 0;
+                for (int k = i - 50; k < i + 50; k++) local += v[k];
+                double d = v[i] - local / 100;
+                m += d;
+                m2 += d * d;
+                n++;
+            }
+            m /= n;
+            return Math.Sqrt(m2 / n - m * m);
+        }
+
+        [Test]
+        public void CalmCopiesAreMadeOfEachOriginalOnlyAndSwayLessSidewaysAndForwards()
+        {
+            var originals = TestData.Training.GetRange(0, 2);
+            var training = GaitTraining.WithAugmentation(originals, 1);
+            var withCalm = GaitTraining.WithCalmCopies(training);
+            Assert.That(withCalm.Count, Is.EqualTo(training.Count + GaitTraining.CalmGateCopies * originals.Count));
+            var sway = GaitTraining.CalmSway;
+            foreach (var copy in withCalm.GetRange(training.Count, withCalm.Count - training.Count))
+            {
+                Assert.That(RecordingAugmentation.IsCopy(copy.Name), copy.Name);
+                var original = originals.Find(r => r.Name == RecordingAugmentation.OriginalName(copy.Name));
+                Assert.That(original, Is.Not.Null, copy.Name + " is a copy of an original, not of a copy");
+                // Relative to the vertical bounce, as time stretch and overall gain scale all three alike.
+                double lateral = Spread(copy, a => a.Y) / Spread(copy, a => a.Z) / (Spread(original, a => a.Y) / Spread(original, a => a.Z));
+                double forward = Spread(copy, a => a.X) / Spread(copy, a => a.Z) / (Spread(original, a => a.X) / Spread(original, a => a.Z));
+                Assert.That(lateral, Is.InRange(sway.MinLateralScale - 0.05, sway.MaxLateralScale + 0.05), copy.Name);
+                Assert.That(forward, Is.InRange(sway.MinForwardScale - 0.05, sway.MaxForwardScale + 0.05), copy.Name);
+            }
+        }
+
         [Test]
         public void AnEarLikeCopyIsSlowerAndSwaysLess()
         {
@@ -228,25 +269,6 @@ namespace HeadGait.Tests
             var ear = RecordingAugmentation.EarLike(rec);
             Assert.That(ear.Name, Is.EqualTo(rec.Name), "scored as the same clip");
             Assert.That(ear.Duration, Is.EqualTo(rec.Duration * RecordingAugmentation.EarLikeStretch).Within(0.02));
-            // Spread of what moves within a second (gravity and head tilt are left as they are), while walking.
-            double Spread(Recording r, Func<ImuSample, double> axis)
-            {
-                var v = r.Samples.ConvertAll(x => axis(x.Imu));
-                double m = 0, m2 = 0;
-                int n = 0;
-                for (int i = 50; i < v.Count - 50; i++)
-                {
-                    if (r.Samples[i].Left == GaitPhase.Standing) continue;
-                    double local = 0;
-                    for (int k = i - 50; k < i + 50; k++) local += v[k];
-                    double d = v[i] - local / 100;
-                    m += d;
-                    m2 += d * d;
-                    n++;
-                }
-                m /= n;
-                return Math.Sqrt(m2 / n - m * m);
-            }
             double slower = 1 / (RecordingAugmentation.EarLikeStretch * RecordingAugmentation.EarLikeStretch);
             Assert.That(Spread(ear, a => a.Z) / Spread(rec, a => a.Z), Is.EqualTo(slower).Within(0.1));
             Assert.That(Spread(ear, a => a.Y) / Spread(rec, a => a.Y), Is.EqualTo(slower * RecordingAugmentation.EarLikeSidewaysGain).Within(0.1));

@@ -198,7 +198,7 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// Share of walking windows THR's and COR's gate lets through. From leave-one-style-out cross-validation of COR: 0.99
+        /// Share of walking windows THR's and COR's gates let through. From leave-one-style-out cross-validation of COR: 0.99
         /// let 14 % of gesturing show as walking, 0.97 7.6 % (misclassification 28.0 to 27.5 %), 0.94 5.6 % but step recall
         /// fell under 95 %.
         /// </summary>
@@ -227,9 +227,9 @@ namespace HeadGait
             => TrainEach(recordings, new[] { walkingPass })[0];
 
         /// <summary>
-        /// One gate per share in <paramref name="walkingPasses"/>, from one fit: the gates differ only in their bias, so the
-        /// classifiers that pass different shares of walking (<see cref="DetectorPass"/>, <see cref="LearnedPass"/>) need the
-        /// windows read and the regression solved once.
+        /// One gate per share in <paramref name="walkingPasses"/>, from one fit: the gates differ only in their bias, so
+        /// classifiers that pass different shares of walking (<see cref="DetectorPass"/>, <see cref="LearnedPass"/>) from
+        /// the same recordings need the windows read and the regression solved once.
         /// </summary>
         public static WalkingGate[] TrainEach(IEnumerable<Recording> recordings, IReadOnlyList<double> walkingPasses)
         {

@@ -25,25 +25,58 @@ namespace HeadGait.Training
             return list;
         }
 
-        /// <summary>The walking gate THR and COR share; open when the recordings hold no standing to learn from.</summary>
-        public static WalkingGate TrainGate(IReadOnlyList<Recording> training) => TrainGates(training).Detectors;
+        /// <summary>
+        /// Copies of each original recording that THR's, the SVM's and the BLSTM's walking gates also learn from, swaying
+        /// sideways and forwards as little as a real ear-worn sensor (see <see cref="CalmSway"/>): a gate that had not seen
+        /// calm sway shut on calm walks and broke them apart. Leave-one-style-out on held-out clips made ear-like
+        /// (<see cref="RecordingAugmentation.EarLike"/>): step recall THR 93.6 to 95.1 %, SVM 93.8 to 95.1 %, BLSTM 94.4 to
+        /// 95.2 %; walking shown as standing THR 8.8 to 6.7 %; walking bouts shown per walk (avatar) SVM 2.02 to 1.91,
+        /// BLSTM 1.61 to 1.48. The clips as recorded scored the same. COR's gate does not learn from them: its correlation
+        /// takes a bouncing bow for a step whenever the gate is open, and with these copies it showed 5.2 instead of 3.7 %
+        /// of the ear-like standing as walking.
+        /// </summary>
+        public const int CalmGateCopies = 2;
 
         /// <summary>
-        /// From one fit, THR's and COR's walking gate (<see cref="WalkingGate.DetectorPass"/>; open when the recordings hold
-        /// no standing to learn from) and the SVM's and BLSTM's (<see cref="WalkingGate.LearnedPass"/>; null then: the models
-        /// run ungated).
+        /// The calm copies' ranges: sideways and forward swing scaled by 0.2 to 0.6 (a real ear-worn sensor measured about
+        /// half of the mocap-derived swing); time stretch and overall gain as for every copy.
         /// </summary>
-        public static (WalkingGate Detectors, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training)
+        public static AugmentationSettings CalmSway => new AugmentationSettings { MinLateralScale = 0.2, MaxLateralScale = 0.6, MinForwardScale = 0.2, MaxForwardScale = 0.6 };
+
+        /// <summary>Seeds the calm copies (with each recording's name), apart from the training copies' seed.</summary>
+        const ulong CalmSeed = 7;
+
+        /// <summary>
+        /// Each classifier's walking gate: THR's and COR's let <see cref="WalkingGate.DetectorPass"/> of the walking windows
+        /// through, the SVM's and BLSTM's <see cref="WalkingGate.LearnedPass"/> (they have a standing class of their own);
+        /// all but COR's are also fitted on <see cref="CalmGateCopies"/> calm copies of each original. Without standing to
+        /// learn from, THR's and COR's gates are open and the learned classifiers' null (the models run ungated).
+        /// </summary>
+        public static TrainedGates TrainGates(IReadOnlyList<Recording> training)
         {
             try
             {
-                var gates = WalkingGate.TrainEach(training, new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass });
-                return (gates[0], gates[1]);
+                var calm = WalkingGate.TrainEach(WithCalmCopies(training), new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass });
+                return new TrainedGates(calm[0], WalkingGate.Train(training, WalkingGate.DetectorPass), calm[1]);
             }
             catch (System.InvalidOperationException)
             {
-                return (WalkingGate.Open, null);
+                return new TrainedGates(WalkingGate.Open, WalkingGate.Open, null);
             }
+        }
+
+        /// <summary>The recordings followed by <see cref="CalmGateCopies"/> calm copies of each labelled original (not of augmented copies).</summary>
+        public static List<Recording> WithCalmCopies(IReadOnlyList<Recording> training)
+        {
+            var list = new List<Recording>(training);
+            var calm = CalmSway;
+            foreach (var rec in training)
+            {
+                if (!rec.HasTruth || RecordingAugmentation.IsCopy(rec.Name)) continue;
+                var random = new DeterministicRandom(CalmSeed ^ DeterministicRandom.SeedFrom(rec.Name));
+                for (int k = 0; k < CalmGateCopies; k++) list.Add(RecordingAugmentation.Augment(rec, random, calm));
+            }
+            return list;
         }
 
         /// <summary>
@@ -102,6 +135,19 @@ namespace HeadGait.Training
             foreach (var rec in training) parts.Add(ReplayEvaluator.Run(rec, make()).ClassifierMetrics);
             double ms = GaitMetrics.Pool(parts).StepTimingMeanMs;
             return double.IsNaN(ms) ? 0 : System.Math.Max(-0.2, System.Math.Min(0.2, ms / 1000));
+        }
+    }
+
+    /// <summary>The walking gates <see cref="GaitTraining.TrainGates"/> fits, one per kind of classifier.</summary>
+    public readonly struct TrainedGates
+    {
+        public readonly WalkingGate Threshold, Correlation, Learned;
+
+        public TrainedGates(WalkingGate threshold, WalkingGate correlation, WalkingGate learned)
+        {
+            Threshold = threshold;
+            Correlation = correlation;
+            Learned = learned;
         }
     }
 }

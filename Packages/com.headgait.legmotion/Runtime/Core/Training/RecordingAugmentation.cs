@@ -54,8 +54,20 @@ namespace HeadGait.Training
         }
 
         /// <summary>"original~..." names the copy and its changes; the part before '~' is the original's name.</summary>
+        const char CopyMark = '~';
+
+        /// <summary>Whether a recording of this name is an augmented copy.</summary>
+        public static bool IsCopy(string name) => name.IndexOf(CopyMark) >= 0;
+
+        /// <summary>The name of the original a copy was made from (the name itself for an original).</summary>
+        public static string OriginalName(string name)
+        {
+            int mark = name.IndexOf(CopyMark);
+            return mark < 0 ? name : name.Substring(0, mark);
+        }
+
         static string AugmentedName(string name, double stretch, double gain, double forward, double lateral)
-            => string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0}~t{1:F2}g{2:F2}f{3:F2}l{4:F2}", name, stretch, gain, forward, lateral);
+            => string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0}{1}t{2:F2}g{3:F2}f{4:F2}l{5:F2}", name, CopyMark, stretch, gain, forward, lateral);
 
         /// <summary>
         /// How much slower and how much weaker sideways and forwards <see cref="EarLike"/> makes a recording. The issue's
