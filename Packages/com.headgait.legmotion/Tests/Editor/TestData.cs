@@ -11,7 +11,7 @@ namespace HeadGait.Tests
         static readonly Dictionary<string, Recording> Cache = new Dictionary<string, Recording>();
         static CorrelationTemplate template;
         static ThresholdSettings threshold;
-        static global::HeadGait.Training.TrainedGates? gates;
+        static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned)? gates;
         static PhaseMap map;
         static List<Recording> training;
 
@@ -71,7 +71,7 @@ namespace HeadGait.Tests
         public static PhaseMap Map => map ?? (map = global::HeadGait.Training.PhaseMapTraining.Learn(TrainingSet));
 
         /// <summary>Every classifier's walking gate, trained as `headgait train` does on the generated training recordings.</summary>
-        public static global::HeadGait.Training.TrainedGates Gates => gates ?? (gates = global::HeadGait.Training.GaitTraining.TrainGates(TrainingSet)).Value;
+        public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates => gates ?? (gates = global::HeadGait.Training.GaitTraining.TrainGates(TrainingSet)).Value;
 
         /// <summary>COR trained as `headgait train` does, on the generated training recordings.</summary>
         public static CorrelationTemplate Template => template ?? (template = global::HeadGait.Training.GaitTraining.TrainCorrelation(TrainingSet, Map, Gates.Correlation));

@@ -52,16 +52,16 @@ namespace HeadGait.Training
         /// all but COR's are also fitted on <see cref="CalmGateCopies"/> calm copies of each original. Without standing to
         /// learn from, THR's and COR's gates are open and the learned classifiers' null (the models run ungated).
         /// </summary>
-        public static TrainedGates TrainGates(IReadOnlyList<Recording> training)
+        public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training)
         {
             try
             {
                 var calm = WalkingGate.TrainEach(WithCalmCopies(training), new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass });
-                return new TrainedGates(calm[0], WalkingGate.Train(training, WalkingGate.DetectorPass), calm[1]);
+                return (calm[0], WalkingGate.Train(training, WalkingGate.DetectorPass), calm[1]);
             }
             catch (System.InvalidOperationException)
             {
-                return new TrainedGates(WalkingGate.Open, WalkingGate.Open, null);
+                return (WalkingGate.Open, WalkingGate.Open, null);
             }
         }
 
@@ -135,19 +135,6 @@ namespace HeadGait.Training
             foreach (var rec in training) parts.Add(ReplayEvaluator.Run(rec, make()).ClassifierMetrics);
             double ms = GaitMetrics.Pool(parts).StepTimingMeanMs;
             return double.IsNaN(ms) ? 0 : System.Math.Max(-0.2, System.Math.Min(0.2, ms / 1000));
-        }
-    }
-
-    /// <summary>The walking gates <see cref="GaitTraining.TrainGates"/> fits, one per kind of classifier.</summary>
-    public readonly struct TrainedGates
-    {
-        public readonly WalkingGate Threshold, Correlation, Learned;
-
-        public TrainedGates(WalkingGate threshold, WalkingGate correlation, WalkingGate learned)
-        {
-            Threshold = threshold;
-            Correlation = correlation;
-            Learned = learned;
         }
     }
 }
