@@ -75,6 +75,7 @@ namespace HeadGait.Cli
             Console.WriteLine("bouts = walking bouts shown per true walking bout (1: each walk shows as one; more: walks broken apart or gestures shown as walking).");
         }
 
-        static string Trim(string s, int n) => s.Length <= n ? s : s.Substring(0, n);
+        /// <summary>A label cut to n characters, keeping its end: recordings of one take differ in their last digits.</summary>
+        static string Trim(string s, int n) => s.Length <= n ? s : s.Substring(0, n / 2 - 2) + ".." + s.Substring(s.Length - (n - n / 2));
     }
 }
