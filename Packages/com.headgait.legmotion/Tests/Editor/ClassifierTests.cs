@@ -81,7 +81,7 @@ namespace HeadGait.Tests
     public class CorrelationClassifierTests
     {
         /// <summary>A stream whose SMV repeats the template step after step (period 0.55 s), left foot first.</summary>
-        static List<ImuSample> TemplateWalk(CorrelationTemplate t, double seconds, out List<double> contacts)
+        static List<ImuSample> TemplateWalk(CorrelationTemplate t, double seconds, out List<double> contacts, double gain = 2.0)
         {
             var samples = new List<ImuSample>();
             contacts = new List<double>();
@@ -92,7 +92,7 @@ namespace HeadGait.Tests
                 double time = i * 0.01;
                 int k = (int)Math.Floor(time / step + 1e-9);
                 double u = Math.Max(0, time / step - k);
-                double smv = 2.0 * CorrelationTemplate.At(t.Templates[0].Smv, u);
+                double smv = gain * CorrelationTemplate.At(t.Templates[0].Smv, u);
                 double side = k % 2 == 0 ? 1 : -1; // even steps are left steps
                 double lateral = side * CorrelationTemplate.At(t.Templates[0].Lateral, u);
                 samples.Add(new ImuSample(time, 0, lateral, 9.80665 + smv));
@@ -129,7 +129,7 @@ namespace HeadGait.Tests
         }
 
         /// <summary>When COR first shows walking on a walk of the template's own steps (NaN: never).</summary>
-        static double FirstWalking(CorrelationSettings settings = null)
+        static double FirstWalking(CorrelationSettings settings = null, double gain = 2.0)
         {
             var t = TestData.Template.With(gate: WalkingGate.Open);
             var pipeline = new GaitPipeline(new CorrelationClassifier(t, settings));
@@ -138,7 +138,7 @@ namespace HeadGait.Tests
             {
                 if (p.IsWalking && double.IsNaN(firstWalking)) firstWalking = p.Time;
             };
-            foreach (var s in TemplateWalk(t, 5, out _)) pipeline.Push(s);
+            foreach (var s in TemplateWalk(t, 5, out _, gain)) pipeline.Push(s);
             return firstWalking;
         }
 
@@ -156,6 +156,20 @@ namespace HeadGait.Tests
             double unreachable = FirstWalking(new CorrelationSettings { StartMargin = 1 });
             Assert.That(off, Is.GreaterThan(searched + 0.05));
             Assert.That(unreachable, Is.EqualTo(off));
+        }
+
+        [Test]
+        public void AStepShapedBobTooSmallForAStepIsNoWalk()
+        {
+            var smv = TestData.Template.Templates[0].Smv;
+            double span = 0;
+            foreach (var a in smv)
+                foreach (var b in smv) span = Math.Max(span, a - b);
+            // The template's own step shape, correlating perfectly, with SMV spanning half of the least a step must span.
+            double gain = 0.5 * new CorrelationSettings().MinStepSpan / span;
+            Assert.That(FirstWalking(gain: gain), Is.NaN, "a bob spanning half the least step span");
+            Assert.That(FirstWalking(new CorrelationSettings { MinStepSpan = 0 }, gain), Is.LessThan(0.6), "the same bob with no least span");
+            Assert.That(FirstWalking(gain: 1.5 * new CorrelationSettings().MinStepSpan / span), Is.LessThan(0.6), "a step half again the least span");
         }
 
         [Test]
