@@ -51,8 +51,9 @@ namespace HeadGait
         /// Leave-one-style-out, standing shown as walking: 3.2 % without, 3.0 / 2.6 / 2.3 / 2.1 / 1.8 % at
         /// 1.5 / 2 / 2.5 / 3 / 3.5 (misclassification 24.0 to 23.8 % at 2). The held-out clips made ear-like, walking
         /// shown as standing: 2.5 % without, 2.4 / 2.8 / 3.9 / 8.1 % at 2 / 2.5 / 3 / 3.5. At 2 for the standing search
-        /// alone, 3.0 %; for contacts alone, 3.2 %. On the generated recordings it costs 0.8 point (23.6 to 24.4 %: a walk
-        /// that starts gently is taken up a step later, on the other foot); for the standing search alone, 23.4 %.
+        /// alone, 3.0 %; for contacts alone, 3.2 %. On the generated recordings it costs 0.8 point (23.6 to 24.4 %: in the
+        /// walks of its start-stop recording the second contact is taken about 60 ms late, and the stride runs behind for
+        /// a few steps); for the standing search alone, 23.4 %.
         /// 0 turns it off.
         /// </summary>
         public double MinStepSpan = 2.0;
