@@ -12,15 +12,18 @@ namespace HeadGait.Training
 
         public const ulong DefaultSeed = 20261122;
 
-        /// <summary>The recordings followed by <paramref name="copies"/> augmented copies of each labelled one (seeded by name).</summary>
-        public static List<Recording> WithAugmentation(IReadOnlyList<Recording> recordings, int copies, ulong seed = DefaultSeed)
+        /// <summary>
+        /// The recordings followed by <paramref name="copies"/> augmented copies of each labelled original (seeded by name;
+        /// copies already in the list get none), drawn from <paramref name="settings"/> (the default ranges when null).
+        /// </summary>
+        public static List<Recording> WithAugmentation(IReadOnlyList<Recording> recordings, int copies, ulong seed = DefaultSeed, AugmentationSettings settings = null)
         {
             var list = new List<Recording>(recordings);
             foreach (var rec in recordings)
             {
-                if (!rec.HasTruth) continue;
+                if (!rec.HasTruth || RecordingAugmentation.IsCopy(rec.Name)) continue;
                 var random = new DeterministicRandom(seed ^ DeterministicRandom.SeedFrom(rec.Name));
-                for (int k = 0; k < copies; k++) list.Add(RecordingAugmentation.Augment(rec, random));
+                for (int k = 0; k < copies; k++) list.Add(RecordingAugmentation.Augment(rec, random, settings));
             }
             return list;
         }
@@ -67,17 +70,7 @@ namespace HeadGait.Training
 
         /// <summary>The recordings followed by <see cref="CalmGateCopies"/> calm copies of each labelled original (not of augmented copies).</summary>
         public static List<Recording> WithCalmCopies(IReadOnlyList<Recording> training)
-        {
-            var list = new List<Recording>(training);
-            var calm = CalmSway;
-            foreach (var rec in training)
-            {
-                if (!rec.HasTruth || RecordingAugmentation.IsCopy(rec.Name)) continue;
-                var random = new DeterministicRandom(CalmSeed ^ DeterministicRandom.SeedFrom(rec.Name));
-                for (int k = 0; k < CalmGateCopies; k++) list.Add(RecordingAugmentation.Augment(rec, random, calm));
-            }
-            return list;
-        }
+            => WithAugmentation(training, CalmGateCopies, CalmSeed, CalmSway);
 
         /// <summary>
         /// Writes what C# learns for the learned classifiers into a trained SVM or BLSTM model file: the walking gate (or
