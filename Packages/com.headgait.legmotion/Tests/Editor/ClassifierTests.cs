@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using HeadGait.Synthetic;
 using NUnit.Framework;
 
@@ -162,9 +163,7 @@ namespace HeadGait.Tests
         public void AStepShapedBobTooSmallForAStepIsNoWalk()
         {
             var smv = TestData.Template.Templates[0].Smv;
-            double span = 0;
-            foreach (var a in smv)
-                foreach (var b in smv) span = Math.Max(span, a - b);
+            double span = smv.Max() - smv.Min();
             // The template's own step shape, correlating perfectly, with SMV spanning half of the least a step must span.
             double gain = 0.5 * new CorrelationSettings().MinStepSpan / span;
             Assert.That(FirstWalking(gain: gain), Is.NaN, "a bob spanning half the least step span");
