@@ -25,17 +25,22 @@ namespace HeadGait.Cli
             var pose = new Option<string[]>("--pose") { Description = "head-pose recordings of the same clips (e.g. ../shared/data/pose-train): each fold's classifiers also score the pose recordings of its held-out clips through the XR pose path", AllowMultipleArgumentsPerToken = true };
             var perRecording = new Option<string>("--per-recording") { Description = "also write every held-out recording's scores to this CSV (which recordings fail, and how)" };
             var earLike = new Option<bool>("--ear-like") { Description = $"also score each held-out clip with its sideways and forward acceleration halved and {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower, as a real ear-worn sensor and slower walkers differ from mocap-derived signals" };
+            var tilted = new Option<bool>("--tilted") { Description = $"also score each held-out clip as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees would give it (a headset worn tilted, a head held looking down)" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, tilted,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(tilted)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool tilted)
         {
+            // Held-out clips changed as a real sensor might differ from these recordings: each is scored by the same fold's classifiers.
+            var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
+            if (earLike) variants.Add(("ear-like", $"made ear-like (sideways and forward acceleration halved, {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower)", RecordingAugmentation.EarLike));
+            if (tilted) variants.Add(("tilted", $"as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees gives them", r => RecordingAugmentation.Tilted(r)));
             var perRecordingRows = new List<RecordingScoresCsv.Row>();
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
@@ -50,13 +55,13 @@ namespace HeadGait.Cli
                 var folds = CrossValidation.Make(scheme, byName.Keys);
                 var pooled = names.ToDictionary(n => n, n => new List<ReplayResult>());
                 var pooledPose = names.ToDictionary(n => n, n => new List<ReplayResult>());
-                var pooledEar = names.ToDictionary(n => n, n => new List<ReplayResult>());
+                var pooledVariant = variants.Select(_ => names.ToDictionary(n => n, n => new List<ReplayResult>())).ToList();
                 var foldRows = new List<(string fold, string clf, List<ReplayResult> results)>();
                 var missing = new List<string>();
                 foreach (var fold in folds)
                 {
                     var test = fold.Test.Select(n => byName[n]).ToList();
-                    var earTest = earLike ? test.Select(RecordingAugmentation.EarLike).ToList() : null;
+                    var variantTests = variants.Select(v => test.Select(v.Make).ToList()).ToList();
                     var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
                     if (train.Count == 0 || test.Count == 0) continue;
                     var map = PhaseMapTraining.Learn(train);
@@ -83,8 +88,8 @@ namespace HeadGait.Cli
                         perRecordingRows.AddRange(results.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Result = r }));
                         foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
                             pooledPose[name].Add(ReplayEvaluator.Run(p, InFold(foldModels.Create(name, out _), gates.Learned, map)));
-                        if (earLike)
-                            pooledEar[name].AddRange(earTest.Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))));
+                        for (int v = 0; v < variants.Count; v++)
+                            pooledVariant[v][name].AddRange(variantTests[v].Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))));
                     }
                 }
                 Console.WriteLine();
@@ -117,15 +122,17 @@ namespace HeadGait.Cli
                     Report.StepHeader();
                     foreach (var name in names.Where(n => pooledPose[n].Count > 0)) Report.StepRows($"pose {scheme} pooled", pooledPose[name][0].Classifier, pooledPose[name]);
                 }
-                if (earLike)
+                for (int v = 0; v < variants.Count; v++)
                 {
+                    var variant = pooledVariant[v];
+                    string label = $"{variants[v].Label} {scheme}";
                     Console.WriteLine();
-                    Console.WriteLine($"The same folds on the held-out clips made ear-like (sideways and forward acceleration halved, {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower; rows above: as recorded):");
+                    Console.WriteLine($"The same folds on the held-out clips {variants[v].Caption} (rows above: as recorded):");
                     Report.PhaseHeader();
-                    foreach (var name in names.Where(n => pooledEar[n].Count > 0)) Report.PhaseRow($"ear-like {scheme}", pooledEar[name][0].Classifier, pooledEar[name]);
+                    foreach (var name in names.Where(n => variant[n].Count > 0)) Report.PhaseRow(label, variant[name][0].Classifier, variant[name]);
                     Console.WriteLine();
                     Report.StepHeader();
-                    foreach (var name in names.Where(n => pooledEar[n].Count > 0)) Report.StepRows($"ear-like {scheme}", pooledEar[name][0].Classifier, pooledEar[name]);
+                    foreach (var name in names.Where(n => variant[n].Count > 0)) Report.StepRows(label, variant[name][0].Classifier, variant[name]);
                 }
             }
             if (perRecordingCsv != null)

@@ -293,6 +293,32 @@ namespace HeadGait.Tests
     public class CrossValidationTests
     {
         [Test]
+        public void ATiltedCopyLooksDownWithTheSameLabelsAndMagnitudes()
+        {
+            var rec = TestData.Eval("walk_straight");
+            var tilted = RecordingAugmentation.Tilted(rec);
+            Assert.That(tilted.Samples.Count, Is.EqualTo(rec.Samples.Count));
+            double pitch = RecordingAugmentation.TiltedPitchDegrees * Math.PI / 180, roll = RecordingAugmentation.TiltedRollDegrees * Math.PI / 180;
+            double forward = 0, lateral = 0, up = 0, before = 0;
+            for (int i = 0; i < rec.Samples.Count; i++)
+            {
+                ImuSample a = rec.Samples[i].Imu, b = tilted.Samples[i].Imu;
+                Assert.That(b.Time, Is.EqualTo(a.Time));
+                Assert.That(tilted.Samples[i].Left, Is.EqualTo(rec.Samples[i].Left));
+                Assert.That(Math.Sqrt(b.X * b.X + b.Y * b.Y + b.Z * b.Z), Is.EqualTo(Math.Sqrt(a.X * a.X + a.Y * a.Y + a.Z * a.Z)).Within(1e-9));
+                forward += b.X;
+                lateral += b.Y;
+                up += b.Z;
+                before += a.X;
+            }
+            int n = rec.Samples.Count;
+            // Nose down: gravity now shows forwards (on top of the generated walker's own lean) and, rolled, sideways.
+            Assert.That(forward / n - before / n, Is.EqualTo(9.81 * Math.Sin(pitch)).Within(1.0));
+            Assert.That(lateral / n, Is.EqualTo(9.81 * Math.Cos(pitch) * Math.Sin(roll)).Within(0.5));
+            Assert.That(up / n, Is.LessThan(9.81 * Math.Cos(pitch) + 0.5));
+        }
+
+        [Test]
         public void StylesComeFromTheCorpusNamingAndOtherNamesAreTheirOwnGroup()
         {
             Assert.That(CrossValidation.StyleOf("bn_wk_act_001"), Is.EqualTo("bn/act"));

@@ -89,6 +89,34 @@ namespace HeadGait.Training
         }
 
         /// <summary>
+        /// How <see cref="Tilted"/> turns a recording: pitched this far nose down, then rolled this far (degrees), as a head
+        /// looking down at its legs, with a headset not quite straight on it.
+        /// </summary>
+        public const double TiltedPitchDegrees = 35, TiltedRollDegrees = 10;
+
+        /// <summary>
+        /// The recording as a sensor pitched <paramref name="pitchDegrees"/> nose down, then rolled <paramref name="rollDegrees"/>,
+        /// would give it (the benchmark's <c>--tilted</c>: <see cref="TiltedPitchDegrees"/>, <see cref="TiltedRollDegrees"/>). Same name.
+        /// </summary>
+        public static Recording Tilted(Recording source, double pitchDegrees = TiltedPitchDegrees, double rollDegrees = TiltedRollDegrees)
+        {
+            double pitch = pitchDegrees * Math.PI / 180, roll = rollDegrees * Math.PI / 180;
+            double cp = Math.Cos(pitch), sp = Math.Sin(pitch), cr = Math.Cos(roll), sr = Math.Sin(roll);
+            var output = new List<RecordedSample>(source.Samples.Count);
+            foreach (var s in source.Samples)
+            {
+                var a = s.Imu;
+                // Turned about y (pitch: at rest, specific force gains a forward part), then about the new x (roll).
+                double x = cp * a.X + sp * a.Z, z = -sp * a.X + cp * a.Z;
+                var imu = new ImuSample(a.Time, x, cr * a.Y + sr * z, -sr * a.Y + cr * z);
+                output.Add(s.HasTruth ? new RecordedSample(imu, s.Left, s.Right, s.Line) : new RecordedSample(imu, s.Line));
+            }
+            var result = new Recording(source.Name, output);
+            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
+            return result;
+        }
+
+        /// <summary>
         /// The deterministic core of <see cref="Augment"/>: stretches time by <paramref name="stretch"/> and multiplies the
         /// dynamic part of x (forward), y (lateral) and z (up) by the given gains.
         /// </summary>
