@@ -422,8 +422,16 @@ def main():
         if "svm" in report:
             report["svm"]["heldout_error"] = round(float(per_foot_error(svm.predict(Xt.reshape(len(Xt), -1).astype(np.float64)), yt, ds.classes)), 4)
         log(f"held-out windows: {len(test)}; " + ", ".join(f"{k} {v['heldout_error']}" for k, v in report.items()))
-    with open(os.path.join(refdir, "training.json"), "w", encoding="utf-8") as f:
-        json.dump({"data": os.path.abspath(args.data), "excluded": len(exclude), "report": report}, f, indent=1)
+    # A run that trains one of the models keeps what an earlier run reported of the other.
+    path = os.path.join(refdir, "training.json")
+    try:
+        with open(path, encoding="utf-8") as f:
+            earlier = json.load(f).get("report", {})
+    except (OSError, ValueError):
+        earlier = {}
+    earlier.update(report)
+    with open(path, "w", encoding="utf-8") as f:
+        json.dump({"data": os.path.abspath(args.data), "excluded": len(exclude), "report": earlier}, f, indent=1)
 
 
 if __name__ == "__main__":
