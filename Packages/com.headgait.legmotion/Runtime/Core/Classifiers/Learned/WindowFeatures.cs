@@ -20,21 +20,32 @@ namespace HeadGait
     /// vibration from aliasing into the slower rate). Lateral, forward and vertical are centred on their window mean (head
     /// tilt leaks gravity into them); SMV minus gravity is used as it is. Each channel is then standardised with the
     /// model's own mean and scale. The result is time-major: [time][channel].
-    /// Written into the model file as e.g. <c>samples:50 step:2 channels:smv,lateral,forward</c>, so training (which
-    /// exports these very features) and inference cannot disagree.
+    /// With <see cref="LevelTolerance"/> the lateral, forward and vertical channels are first turned so that the window's
+    /// mean specific force leans at most that many degrees from straight up (<see cref="WindowLevel"/>): a head looking
+    /// down at its legs, or a sensor worn tilted, would otherwise feed the vertical bounce into the forward channel.
+    /// Written into the model file as e.g. <c>samples:50 step:2 channels:smv,lateral,forward level:15</c>, so training
+    /// (which exports these very features) and inference cannot disagree.
     /// </summary>
     public sealed class WindowFeatures
     {
-        public WindowFeatures(int samples, int step, IReadOnlyList<WindowChannel> channels)
+        public WindowFeatures(int samples, int step, IReadOnlyList<WindowChannel> channels, double? levelTolerance = null)
         {
             if (samples < 2 || samples > 1000) throw new ArgumentException("A window needs 2..1000 samples.", nameof(samples));
             if (step < 1 || step > samples || samples % step != 0) throw new ArgumentException("The step must divide the window length.", nameof(step));
             if (channels == null || channels.Count == 0) throw new ArgumentException("At least one channel is needed.", nameof(channels));
+            if (levelTolerance.HasValue && !(levelTolerance.Value >= 0 && levelTolerance.Value <= 90)) throw new ArgumentException("The levelling tolerance is 0..90 degrees.", nameof(levelTolerance));
             Samples = samples;
             Step = step;
             Channels = new List<WindowChannel>(channels).ToArray();
             TimeSteps = samples / step;
+            LevelTolerance = levelTolerance;
         }
+
+        /// <summary>
+        /// Tilt (degrees) beyond which the window is levelled before the channels are read; null: not levelled (files
+        /// written before levelling).
+        /// </summary>
+        public double? LevelTolerance { get; }
 
         public int Samples { get; }
         public int Step { get; }
@@ -55,32 +66,33 @@ namespace HeadGait
             int c = Channels.Length;
             int first = window.Length - Samples;
             double inv = 1.0 / Step;
+            var level = LevelTolerance.HasValue ? WindowLevel.Of(window, first, LevelTolerance.Value) : WindowLevel.None;
             for (int ch = 0; ch < c; ch++)
             {
-                var source = Source(window, Channels[ch]);
+                var channel = Channels[ch];
                 double mean = 0;
-                if (Channels[ch] != WindowChannel.Smv)
+                if (channel != WindowChannel.Smv)
                 {
-                    for (int i = first; i < window.Length; i++) mean += source[i];
+                    for (int i = first; i < window.Length; i++) mean += Value(window, channel, level, i);
                     mean /= Samples;
                 }
                 for (int t = 0; t < TimeSteps; t++)
                 {
                     double sum = 0;
-                    for (int i = first + t * Step; i < first + (t + 1) * Step; i++) sum += source[i];
+                    for (int i = first + t * Step; i < first + (t + 1) * Step; i++) sum += Value(window, channel, level, i);
                     destination[t * c + ch] = sum * inv - mean;
                 }
             }
         }
 
-        static double[] Source(SignalWindow w, WindowChannel channel)
+        static double Value(SignalWindow w, WindowChannel channel, in WindowLevel level, int i)
         {
             switch (channel)
             {
-                case WindowChannel.Smv: return w.Smv;
-                case WindowChannel.Lateral: return w.Lateral;
-                case WindowChannel.Forward: return w.Forward;
-                default: return w.Vertical;
+                case WindowChannel.Smv: return w.Smv[i];
+                case WindowChannel.Lateral: return level.Lateral(w, i);
+                case WindowChannel.Forward: return level.Forward(w, i);
+                default: return level.Vertical(w, i);
             }
         }
 
@@ -91,12 +103,14 @@ namespace HeadGait
               .Append(" step:").Append(Step.ToString(CultureInfo.InvariantCulture))
               .Append(" channels:");
             for (int i = 0; i < Channels.Length; i++) sb.Append(i > 0 ? "," : "").Append(Channels[i].ToString().ToLowerInvariant());
+            if (LevelTolerance.HasValue) sb.Append(" level:").Append(LevelTolerance.Value.ToString("R", CultureInfo.InvariantCulture));
             return sb.ToString();
         }
 
         public static WindowFeatures Parse(string text)
         {
             int samples = -1, step = -1;
+            double? level = null;
             List<WindowChannel> channels = null;
             foreach (var part in (text ?? "").Split(new[] { ' ' }, StringSplitOptions.RemoveEmptyEntries))
             {
@@ -107,6 +121,11 @@ namespace HeadGait
                 {
                     case "samples": samples = ParseInt(value, key); break;
                     case "step": step = ParseInt(value, key); break;
+                    case "level":
+                        if (!double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out double tolerance) || !(tolerance >= 0 && tolerance <= 90))
+                            throw new FormatException($"feature spec 'level' is '{value}', not a tilt of 0..90 degrees");
+                        level = tolerance;
+                        break;
                     case "channels":
                         channels = new List<WindowChannel>();
                         foreach (var name in value.Split(','))
@@ -122,7 +141,7 @@ namespace HeadGait
             if (samples < 0 || step < 0 || channels == null) throw new FormatException($"feature spec '{text}' needs samples, step and channels");
             try
             {
-                return new WindowFeatures(samples, step, channels);
+                return new WindowFeatures(samples, step, channels, level);
             }
             catch (ArgumentException e)
             {
