@@ -13,12 +13,11 @@ namespace HeadGait.Cli
     {
         /// <summary>
         /// What the learned classifiers read: 1 s at 25 Hz of SMV minus gravity, lateral and forward acceleration, with a
-        /// second whose mean specific force leans more than 15 degrees turned back to 15 (<see cref="WindowLevel"/>: a head
-        /// looking down at its legs otherwise feeds the vertical bounce into the forward channel; nine in ten walking
-        /// seconds of the real training data lean less, and are read as they are). A second holds two steps; in
+        /// second whose mean specific force leans more than <see cref="WindowLevel.ToleranceDegrees"/> turned back to it
+        /// (a head looking down at its legs otherwise feeds the vertical bounce into the forward channel). A second holds two steps; in
         /// cross-validation it beat the paper's 0.5 s window on unseen styles.
         /// </summary>
-        public const string DefaultFeatures = "samples:100 step:4 channels:smv,lateral,forward level:15";
+        public static readonly string DefaultFeatures = "samples:100 step:4 channels:smv,lateral,forward level:" + WindowLevel.ToleranceDegrees.ToString(System.Globalization.CultureInfo.InvariantCulture);
 
         /// <summary>Labels 40 ms ahead of each window's newest sample: in cross-validation this cancelled the learned classifiers' lateness.</summary>
         public const double DefaultLabelLead = 0.04;

@@ -15,9 +15,14 @@ namespace HeadGait.Tests
             var training = TestData.Training;
             var gates = GaitTraining.TrainGates(training);
             var withCalm = GaitTraining.WithCalmCopies(training);
-            Assert.That(gates.Threshold.Weights, Is.EqualTo(WalkingGate.Train(withCalm, WalkingGate.DetectorPass).Weights));
+            Assert.That(gates.Threshold.Weights, Is.EqualTo(WalkingGate.Train(withCalm, WalkingGate.DetectorPass, WindowLevel.ToleranceDegrees).Weights));
             Assert.That(gates.Correlation.Weights, Is.EqualTo(WalkingGate.Train(training, WalkingGate.DetectorPass).Weights));
-            Assert.That(gates.Learned.Weights, Is.EqualTo(WalkingGate.Train(withCalm, WalkingGate.LearnedPass).Weights));
+            Assert.That(gates.Learned.Weights, Is.EqualTo(WalkingGate.Train(withCalm, WalkingGate.LearnedPass, WindowLevel.ToleranceDegrees).Weights));
+            // THR's and the learned classifiers' gates read a head looking down at its legs levelled; COR's, whose correlation
+            // takes a bouncing bow for a step, does not.
+            Assert.That(gates.Threshold.LevelTolerance, Is.EqualTo(WindowLevel.ToleranceDegrees));
+            Assert.That(gates.Learned.LevelTolerance, Is.EqualTo(WindowLevel.ToleranceDegrees));
+            Assert.That(gates.Correlation.LevelTolerance, Is.Null);
             Assert.That(gates.Threshold.Weights, Is.Not.EqualTo(gates.Correlation.Weights), "the calm copies change the fit");
         }
 
@@ -70,6 +75,63 @@ namespace HeadGait.Tests
             Assert.That(linear.Weights, Is.EqualTo(LinearWeights(new[] { 1.5, 2, -0.5, 0.25, -3, 7, -0.8 }, -12)));
             Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=1,2,3\n", "# test", "thr.txt").Gate("walking_gate"),
                 Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains($"expected {WalkingGate.WeightCount}"));
+        }
+
+        [Test]
+        public void ALevellingGateSaysSoInItsText()
+        {
+            var w = new double[WalkingGate.WeightCount];
+            w[0] = 1.5;
+            w[WalkingGate.InputCount] = -2;
+            var gate = new WalkingGate(w, 15);
+            Assert.That(gate.Serialize(), Does.StartWith("level:15;"));
+            var back = WalkingGate.Parse(gate.Serialize());
+            Assert.That(back.LevelTolerance, Is.EqualTo(15));
+            Assert.That(back.Weights, Is.EqualTo(w));
+            Assert.That(WalkingGate.Parse(new WalkingGate(w).Serialize()).LevelTolerance, Is.Null);
+            var kv = KeyValueText.Parse("# test\nwalking_gate=" + gate.Serialize() + "\n", "# test", "thr.txt");
+            Assert.That(kv.Gate("walking_gate").LevelTolerance, Is.EqualTo(15));
+            Assert.That(() => WalkingGate.Parse("level:x;" + new WalkingGate(w).Serialize()), Throws.TypeOf<FormatException>().With.Message.Contains("levelling"));
+            Assert.That(() => WalkingGate.Parse("level:15"), Throws.TypeOf<FormatException>().With.Message.Contains("levelling"));
+            Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=level:200;1,2\n", "# test", "thr.txt").Gate("walking_gate"),
+                Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt"));
+        }
+
+        [Test]
+        public void ALevellingGateReadsAWalkLookingDownAsUpright()
+        {
+            // The generated walk, and the same walk from a head pitched 35 degrees down and rolled 10: levelled, the
+            // spreads agree; as the head frame gives them, the forward one swings with the bounce. The mean vertical
+            // (a bow's tilt) is read as it is either way.
+            var walk = TestData.Eval("walk_straight");
+            var tilted = RecordingAugmentation.Tilted(walk);
+            List<double[]> FeaturesOf(Recording r, double? tolerance)
+            {
+                var rows = new List<double[]>();
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
+                foreach (var s in r.Samples)
+                    pre.Push(s.Imu, window =>
+                    {
+                        if (window.Count < window.Length) return;
+                        var f = new double[WalkingGate.FeatureCount];
+                        WalkingGate.Features(window, f, tolerance);
+                        rows.Add(f);
+                    });
+                return rows;
+            }
+            double MeanGap(List<double[]> a, List<double[]> b, int feature)
+            {
+                double sum = 0;
+                for (int i = 0; i < a.Count; i++) sum += Math.Abs(a[i][feature] - b[i][feature]);
+                return sum / a.Count;
+            }
+            var upright = FeaturesOf(walk, 0);
+            var levelled = FeaturesOf(tilted, 0);
+            var raw = FeaturesOf(tilted, null);
+            for (int k = 1; k <= 3; k++)
+                Assert.That(MeanGap(upright, levelled, k), Is.LessThan(0.1).And.LessThan(MeanGap(upright, raw, k) / 5), $"log spread {k}");
+            Assert.That(MeanGap(upright, raw, 3), Is.GreaterThan(0.3), "forward log spread, not levelled");
+            Assert.That(MeanGap(upright, levelled, 5), Is.GreaterThan(0.1), "the mean vertical keeps the tilt");
         }
 
         [Test]

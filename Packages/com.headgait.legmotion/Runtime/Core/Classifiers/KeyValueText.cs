@@ -94,9 +94,18 @@ namespace HeadGait
             return Numbers(key, Array.IndexOf(olderCounts, found) >= 0 ? found : count, min, max);
         }
 
-        /// <summary>A walking gate's weights (also the shorter lists older models hold, <see cref="WalkingGate.OlderLengths"/>).</summary>
+        /// <summary>A walking gate as <see cref="WalkingGate.Serialize"/> writes it (also the shorter lists older models hold, <see cref="WalkingGate.OlderLengths"/>).</summary>
         public WalkingGate Gate(string key)
-            => WalkingGate.FromWeights(Numbers(key, WalkingGate.WeightCount, WalkingGate.OlderLengths(), -1e4, 1e4));
+        {
+            try
+            {
+                return WalkingGate.Parse(Need(key));
+            }
+            catch (FormatException e)
+            {
+                throw new FormatException($"{Source}: '{key}': {e.Message}");
+            }
+        }
 
         public PhaseMap PhaseMap(string key)
         {

@@ -50,16 +50,23 @@ namespace HeadGait
         const double Epsilon = 0.01;
 
         readonly double[] weights; // InputCount weights, then the bias
+        readonly double? levelTolerance;
         readonly double[] features = new double[FeatureCount];
         readonly double[] inputs = new double[InputCount];
 
-        public WalkingGate(double[] weights)
+        /// <param name="levelTolerance">Tilt (degrees) beyond which the spreads are read from a levelled window (<see cref="Features"/>); null: as the head frame gives them.</param>
+        public WalkingGate(double[] weights, double? levelTolerance = null)
         {
             if (weights == null || weights.Length != WeightCount) throw new ArgumentException($"A walking gate has {WeightCount} weights.");
             foreach (var w in weights)
                 if (!ImuSample.IsFiniteNumber(w) || Math.Abs(w) > 1e4) throw new ArgumentException("Walking gate weights must be finite and below 1e4.");
+            if (levelTolerance.HasValue && !(levelTolerance.Value >= 0 && levelTolerance.Value <= 90)) throw new ArgumentException("A walking gate's levelling tolerance is 0..90 degrees.");
             this.weights = (double[])weights.Clone();
+            this.levelTolerance = levelTolerance;
         }
+
+        /// <summary>Tilt (degrees) beyond which the gate reads its spreads from a levelled window; null: never levelled.</summary>
+        public double? LevelTolerance => levelTolerance;
 
         /// <summary>Lets everything through (no gate).</summary>
         public static WalkingGate Open { get; } = Linear(new double[FeatureCount], 1);
@@ -69,7 +76,7 @@ namespace HeadGait
         /// <summary>Log-odds that the window's newest 0.5 s is walking; positive passes.</summary>
         public double Score(SignalWindow window)
         {
-            Features(window, features);
+            Features(window, features, levelTolerance);
             FillInputs(features, inputs);
             return LogOdds(weights, inputs);
         }
@@ -98,15 +105,26 @@ namespace HeadGait
 
         public bool Passes(SignalWindow window) => Score(window) > 0;
 
-        /// <summary>The gate's inputs for the newest 50 samples (or fewer right after a restart).</summary>
-        public static void Features(SignalWindow w, double[] f)
+        /// <summary>
+        /// The gate's inputs for the newest 50 samples (or fewer right after a restart). With <paramref name="levelTolerance"/>
+        /// the vertical, lateral and forward spreads come from the window levelled over its second (<see cref="WindowLevel"/>):
+        /// a head looking down at its legs otherwise swings its forward channel with the bounce, as a bow does. The mean
+        /// vertical stays as the head frame gives it, since a bow's tilt is what tells it from a walk.
+        /// </summary>
+        public static void Features(SignalWindow w, double[] f, double? levelTolerance = null)
         {
             int n = Math.Min(Samples, Math.Min(w.Count, w.Length));
             int first = w.Length - n;
+            var level = WindowLevel.None;
+            if (levelTolerance.HasValue)
+            {
+                int history = Math.Min((int)Math.Round(HistorySamples * w.SampleRate / 100), Math.Min(w.Count, w.Length));
+                level = WindowLevel.Of(w, w.Length - history, levelTolerance.Value);
+            }
             f[0] = LogSpread(w.Smv, first, n);
-            f[1] = LogSpread(w.Vertical, first, n);
-            f[2] = LogSpread(w.Lateral, first, n);
-            f[3] = LogSpread(w.Forward, first, n);
+            f[1] = LogSpread(w, level, Axis.Vertical, first, n);
+            f[2] = LogSpread(w, level, Axis.Lateral, first, n);
+            f[3] = LogSpread(w, level, Axis.Forward, first, n);
             double d = 0;
             for (int i = first + 1; i < first + n; i++) d += Math.Abs(w.Smv[i] - w.Smv[i - 1]);
             f[4] = Math.Log(d / Math.Max(1, n - 1) + Epsilon);
@@ -137,6 +155,22 @@ namespace HeadGait
 
         const double StandardGravity = 9.80665;
 
+        enum Axis { Forward, Lateral, Vertical }
+
+        static double LogSpread(SignalWindow w, in WindowLevel level, Axis axis, int first, int n)
+        {
+            if (n < 2) return Math.Log(Epsilon);
+            double m = 0, m2 = 0;
+            for (int i = first; i < first + n; i++)
+            {
+                double v = axis == Axis.Forward ? level.Forward(w, i) : axis == Axis.Lateral ? level.Lateral(w, i) : level.Vertical(w, i);
+                m += v;
+                m2 += v * v;
+            }
+            m /= n;
+            return Math.Log(Math.Sqrt(Math.Max(0, m2 / n - m * m)) + Epsilon);
+        }
+
         static double LogSpread(double[] v, int first, int n)
         {
             if (n < 2) return Math.Log(Epsilon);
@@ -150,17 +184,31 @@ namespace HeadGait
             return Math.Log(Math.Sqrt(Math.Max(0, m2 / n - m * m)) + Epsilon);
         }
 
-        /// <summary>Reads weights as <see cref="Serialize"/> writes them; a <see cref="FormatException"/> says what is wrong.</summary>
+        /// <summary>What a levelling gate's text starts with: <c>level:15;</c> then the weights.</summary>
+        const string LevelPrefix = "level:";
+
+        /// <summary>Reads a gate as <see cref="Serialize"/> writes it; a <see cref="FormatException"/> says what is wrong.</summary>
         public static WalkingGate Parse(string text)
         {
-            var parts = (text ?? "").Split(',');
+            text = text ?? "";
+            double? level = null;
+            if (text.StartsWith(LevelPrefix, StringComparison.Ordinal))
+            {
+                int end = text.IndexOf(';');
+                string value = end < 0 ? text.Substring(LevelPrefix.Length) : text.Substring(LevelPrefix.Length, end - LevelPrefix.Length);
+                if (end < 0 || !double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out double tolerance) || !(tolerance >= 0 && tolerance <= 90))
+                    throw new FormatException($"walking gate levelling '{value}' is not a tilt of 0..90 degrees followed by ';' and the weights");
+                level = tolerance;
+                text = text.Substring(end + 1);
+            }
+            var parts = text.Split(',');
             if (parts.Length != WeightCount && Array.IndexOf(OlderLengths(), parts.Length) < 0)
-                throw new FormatException($"a walking gate has {WeightCount} comma-separated weights (or {LinearWeightCount} or {LinearWeightCount - 1} from an older model), found {parts.Length}");
+                throw new FormatException($"a walking gate has {WeightCount} comma-separated weights (expected {WeightCount}, or {LinearWeightCount} or {LinearWeightCount - 1} from an older model), found {parts.Length}");
             var w = new double[parts.Length];
             for (int i = 0; i < parts.Length; i++)
                 if (!double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out w[i]) || !ImuSample.IsFiniteNumber(w[i]) || Math.Abs(w[i]) > 1e4)
                     throw new FormatException($"walking gate weight {i + 1} is '{parts[i].Trim()}', not a finite number below 1e4");
-            return FromWeights(w);
+            return FromWeights(w, level);
         }
 
         /// <summary>Weights of a gate written before the pairwise products: the seven features and the bias.</summary>
@@ -173,26 +221,27 @@ namespace HeadGait
         /// A gate from its weights as written (<see cref="WeightCount"/> or one of <see cref="OlderLengths"/>). An older linear gate weighs no products, and
         /// one written before the autocorrelation input weighs that at nothing: either decides as it did.
         /// </summary>
-        public static WalkingGate FromWeights(double[] w)
+        public static WalkingGate FromWeights(double[] w, double? levelTolerance = null)
         {
-            if (w == null || w.Length == WeightCount) return new WalkingGate(w);
+            if (w == null || w.Length == WeightCount) return new WalkingGate(w, levelTolerance);
             if (w.Length != LinearWeightCount && w.Length != LinearWeightCount - 1) return new WalkingGate(w); // refused, naming the count
             var linear = new double[FeatureCount];
             Array.Copy(w, linear, w.Length - 1);
-            return Linear(linear, w[w.Length - 1]);
+            return Linear(linear, w[w.Length - 1], levelTolerance);
         }
 
-        static WalkingGate Linear(double[] featureWeights, double bias)
+        static WalkingGate Linear(double[] featureWeights, double bias, double? levelTolerance = null)
         {
             var full = new double[WeightCount];
             Array.Copy(featureWeights, full, FeatureCount);
             full[InputCount] = bias;
-            return new WalkingGate(full);
+            return new WalkingGate(full, levelTolerance);
         }
 
         public string Serialize()
         {
             var sb = new StringBuilder();
+            if (levelTolerance.HasValue) sb.Append(LevelPrefix).Append(levelTolerance.Value.ToString("R", CultureInfo.InvariantCulture)).Append(';');
             for (int i = 0; i < weights.Length; i++) sb.Append(i > 0 ? "," : "").Append(weights[i].ToString("R", CultureInfo.InvariantCulture));
             return sb.ToString();
         }
@@ -223,15 +272,15 @@ namespace HeadGait
         /// windows pass: the gate only has to keep out what clearly is not walking; the classifiers decide the rest.
         /// Throws <see cref="InvalidOperationException"/> without both classes.
         /// </summary>
-        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = DetectorPass)
-            => TrainEach(recordings, new[] { walkingPass })[0];
+        public static WalkingGate Train(IEnumerable<Recording> recordings, double walkingPass = DetectorPass, double? levelTolerance = null)
+            => TrainEach(recordings, new[] { walkingPass }, levelTolerance)[0];
 
         /// <summary>
         /// One gate per share in <paramref name="walkingPasses"/>, from one fit: the gates differ only in their bias, so
         /// classifiers that pass different shares of walking (<see cref="DetectorPass"/>, <see cref="LearnedPass"/>) from
         /// the same recordings need the windows read and the regression solved once.
         /// </summary>
-        public static WalkingGate[] TrainEach(IEnumerable<Recording> recordings, IReadOnlyList<double> walkingPasses)
+        public static WalkingGate[] TrainEach(IEnumerable<Recording> recordings, IReadOnlyList<double> walkingPasses, double? levelTolerance = null)
         {
             var walking = new List<double[]>();
             var standing = new List<double[]>();
@@ -250,7 +299,7 @@ namespace HeadGait
                         while (row + 1 < rows.Count && rows[row + 1].Imu.Time <= w.EndTime + 1e-9) row++;
                         if (row < 0 || !rows[row].HasTruth) return;
                         var f = new double[FeatureCount];
-                        Features(w, f);
+                        Features(w, f, levelTolerance);
                         var x = new double[InputCount];
                         FillInputs(f, x);
                         (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(x);
@@ -268,7 +317,7 @@ namespace HeadGait
             for (int g = 0; g < gates.Length; g++)
             {
                 weights[InputCount] = -scores[(int)Math.Floor((1 - walkingPasses[g]) * (scores.Count - 1))] + 1e-9;
-                gates[g] = new WalkingGate(weights); // copies the weights
+                gates[g] = new WalkingGate(weights, levelTolerance); // copies the weights
             }
             return gates;
         }

@@ -52,14 +52,16 @@ namespace HeadGait.Training
         /// <summary>
         /// Each classifier's walking gate: THR's and COR's let <see cref="WalkingGate.DetectorPass"/> of the walking windows
         /// through, the SVM's and BLSTM's <see cref="WalkingGate.LearnedPass"/> (they have a standing class of their own);
-        /// all but COR's are also fitted on <see cref="CalmGateCopies"/> calm copies of each original. Without standing to
+        /// all but COR's are also fitted on <see cref="CalmGateCopies"/> calm copies of each original and read their spreads
+        /// levelled beyond <see cref="WindowLevel.ToleranceDegrees"/> (a head looking down at its legs; COR's, levelled, let
+        /// more bows through: standing shown as walking 2.6 to 2.7 %). Without standing to
         /// learn from, THR's and COR's gates are open and the learned classifiers' null (the models run ungated).
         /// </summary>
         public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training)
         {
             try
             {
-                var calm = WalkingGate.TrainEach(WithCalmCopies(training), new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass });
+                var calm = WalkingGate.TrainEach(WithCalmCopies(training), new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass }, WindowLevel.ToleranceDegrees);
                 return (calm[0], WalkingGate.Train(training, WalkingGate.DetectorPass), calm[1]);
             }
             catch (System.InvalidOperationException)
