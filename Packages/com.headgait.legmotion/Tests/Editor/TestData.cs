@@ -89,6 +89,19 @@ namespace HeadGait.Tests
 
         public static ImuSample Still(double t) => new ImuSample(t, 0, 0, 9.80665);
 
+        /// <summary>What <paramref name="read"/> makes of every full window (<paramref name="history"/> samples) of a recording.</summary>
+        public static List<double[]> PerWindow(Recording r, int history, Func<SignalWindow, double[]> read)
+        {
+            var rows = new List<double[]>();
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = history });
+            foreach (var s in r.Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    if (w.Count >= w.Length) rows.Add(read(w));
+                });
+            return rows;
+        }
+
         /// <summary>
         /// A folder of the real-motion data beside the repository (../shared/data/SUB, or $HEADGAIT_DATA/SUB). The data is
         /// not part of the package (licence), so a test that needs it is skipped with the path it looked for when it is absent.

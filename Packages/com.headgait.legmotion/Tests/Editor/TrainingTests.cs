@@ -105,20 +105,12 @@ namespace HeadGait.Tests
             // (a bow's tilt) is read as it is either way.
             var walk = TestData.Eval("walk_straight");
             var tilted = RecordingAugmentation.Tilted(walk);
-            List<double[]> FeaturesOf(Recording r, double? tolerance)
+            List<double[]> FeaturesOf(Recording r, double? tolerance) => TestData.PerWindow(r, WalkingGate.HistorySamples, window =>
             {
-                var rows = new List<double[]>();
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = WalkingGate.HistorySamples });
-                foreach (var s in r.Samples)
-                    pre.Push(s.Imu, window =>
-                    {
-                        if (window.Count < window.Length) return;
-                        var f = new double[WalkingGate.FeatureCount];
-                        WalkingGate.Features(window, f, tolerance);
-                        rows.Add(f);
-                    });
-                return rows;
-            }
+                var f = new double[WalkingGate.FeatureCount];
+                WalkingGate.Features(window, f, tolerance);
+                return f;
+            });
             double MeanGap(List<double[]> a, List<double[]> b, int feature)
             {
                 double sum = 0;
@@ -299,20 +291,12 @@ namespace HeadGait.Tests
         }
 
         /// <summary>The learned features of every window after the first second of a recording.</summary>
-        static List<double[]> FeaturesOf(Recording r, WindowFeatures f)
+        static List<double[]> FeaturesOf(Recording r, WindowFeatures f) => TestData.PerWindow(r, f.Samples, w =>
         {
-            var rows = new List<double[]>();
-            var pre = new StreamPreprocessor(new PreprocessorSettings { History = f.Samples });
-            foreach (var s in r.Samples)
-                pre.Push(s.Imu, w =>
-                {
-                    if (w.Count < w.Length) return;
-                    var x = new double[f.Width];
-                    f.Extract(w, x);
-                    rows.Add(x);
-                });
-            return rows;
-        }
+            var x = new double[f.Width];
+            f.Extract(w, x);
+            return x;
+        });
 
         static double RmsDifference(List<double[]> a, List<double[]> b)
         {
