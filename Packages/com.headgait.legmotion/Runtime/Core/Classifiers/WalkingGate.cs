@@ -60,7 +60,7 @@ namespace HeadGait
             if (weights == null || weights.Length != WeightCount) throw new ArgumentException($"A walking gate has {WeightCount} weights.");
             foreach (var w in weights)
                 if (!ImuSample.IsFiniteNumber(w) || Math.Abs(w) > 1e4) throw new ArgumentException("Walking gate weights must be finite and below 1e4.");
-            if (levelTolerance.HasValue && !(levelTolerance.Value >= 0 && levelTolerance.Value <= 90)) throw new ArgumentException("A walking gate's levelling tolerance is 0..90 degrees.");
+            if (levelTolerance.HasValue && !WindowLevel.IsTolerance(levelTolerance.Value)) throw new ArgumentException("A walking gate's levelling tolerance is 0..90 degrees.");
             this.weights = (double[])weights.Clone();
             this.levelTolerance = levelTolerance;
         }
@@ -115,16 +115,11 @@ namespace HeadGait
         {
             int n = Math.Min(Samples, Math.Min(w.Count, w.Length));
             int first = w.Length - n;
-            var level = WindowLevel.None;
-            if (levelTolerance.HasValue)
-            {
-                int history = Math.Min((int)Math.Round(HistorySamples * w.SampleRate / 100), Math.Min(w.Count, w.Length));
-                level = WindowLevel.Of(w, w.Length - history, levelTolerance.Value);
-            }
-            f[0] = LogSpread(w.Smv, first, n);
-            f[1] = LogSpread(w, level, Axis.Vertical, first, n);
-            f[2] = LogSpread(w, level, Axis.Lateral, first, n);
-            f[3] = LogSpread(w, level, Axis.Forward, first, n);
+            var level = levelTolerance.HasValue ? WindowLevel.Of(w, w.Length - HistoryCount(w), levelTolerance.Value) : WindowLevel.None;
+            f[0] = LogSpread(w, level, WindowChannel.Smv, first, n);
+            f[1] = LogSpread(w, level, WindowChannel.Vertical, first, n);
+            f[2] = LogSpread(w, level, WindowChannel.Lateral, first, n);
+            f[3] = LogSpread(w, level, WindowChannel.Forward, first, n);
             double d = 0;
             for (int i = first + 1; i < first + n; i++) d += Math.Abs(w.Smv[i] - w.Smv[i - 1]);
             f[4] = Math.Log(d / Math.Max(1, n - 1) + Epsilon);
@@ -137,7 +132,7 @@ namespace HeadGait
         /// <summary>SMV's autocorrelation (mean removed) at <paramref name="lag"/> over the newest second; 0 when it is flat or too short.</summary>
         static double Autocorrelation(SignalWindow w, int lag)
         {
-            int n = Math.Min((int)Math.Round(HistorySamples * w.SampleRate / 100), Math.Min(w.Count, w.Length));
+            int n = HistoryCount(w);
             if (lag < 1 || n < 2 * lag) return 0;
             int first = w.Length - n;
             double m = 0;
@@ -155,30 +150,18 @@ namespace HeadGait
 
         const double StandardGravity = 9.80665;
 
-        enum Axis { Forward, Lateral, Vertical }
+        /// <summary>Valid samples of the second the gate reads (its autocorrelation and levelling), at the window's rate.</summary>
+        static int HistoryCount(SignalWindow w) => Math.Min((int)Math.Round(HistorySamples * w.SampleRate / 100), Math.Min(w.Count, w.Length));
 
-        static double LogSpread(SignalWindow w, in WindowLevel level, Axis axis, int first, int n)
+        static double LogSpread(SignalWindow w, in WindowLevel level, WindowChannel channel, int first, int n)
         {
             if (n < 2) return Math.Log(Epsilon);
             double m = 0, m2 = 0;
             for (int i = first; i < first + n; i++)
             {
-                double v = axis == Axis.Forward ? level.Forward(w, i) : axis == Axis.Lateral ? level.Lateral(w, i) : level.Vertical(w, i);
+                double v = level.Read(w, channel, i);
                 m += v;
                 m2 += v * v;
-            }
-            m /= n;
-            return Math.Log(Math.Sqrt(Math.Max(0, m2 / n - m * m)) + Epsilon);
-        }
-
-        static double LogSpread(double[] v, int first, int n)
-        {
-            if (n < 2) return Math.Log(Epsilon);
-            double m = 0, m2 = 0;
-            for (int i = first; i < first + n; i++)
-            {
-                m += v[i];
-                m2 += v[i] * v[i];
             }
             m /= n;
             return Math.Log(Math.Sqrt(Math.Max(0, m2 / n - m * m)) + Epsilon);
@@ -196,7 +179,7 @@ namespace HeadGait
             {
                 int end = text.IndexOf(';');
                 string value = end < 0 ? text.Substring(LevelPrefix.Length) : text.Substring(LevelPrefix.Length, end - LevelPrefix.Length);
-                if (end < 0 || !double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out double tolerance) || !(tolerance >= 0 && tolerance <= 90))
+                if (end < 0 || !WindowLevel.TryParseTolerance(value, out double tolerance))
                     throw new FormatException($"walking gate levelling '{value}' is not a tilt of 0..90 degrees followed by ';' and the weights");
                 level = tolerance;
                 text = text.Substring(end + 1);

@@ -55,6 +55,25 @@ namespace HeadGait
             return new WindowLevel(y / horizontal, -x / horizontal, Math.Cos(turn), Math.Sin(turn));
         }
 
+        /// <summary>Whether <paramref name="degrees"/> is a tolerance a levelling can have: 0..90.</summary>
+        public static bool IsTolerance(double degrees) => degrees >= 0 && degrees <= 90;
+
+        /// <summary>Reads a tolerance as the model files write it (invariant culture, 0..90 degrees).</summary>
+        public static bool TryParseTolerance(string text, out double degrees)
+            => double.TryParse(text, System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture, out degrees) && IsTolerance(degrees);
+
+        /// <summary>Sample <paramref name="i"/> of a channel of the levelled window (SMV, which no turn changes, as it is).</summary>
+        public double Read(SignalWindow w, WindowChannel channel, int i)
+        {
+            switch (channel)
+            {
+                case WindowChannel.Smv: return w.Smv[i];
+                case WindowChannel.Lateral: return Lateral(w, i);
+                case WindowChannel.Forward: return Forward(w, i);
+                default: return Vertical(w, i);
+            }
+        }
+
         public double Forward(SignalWindow w, int i) => r00 * w.Forward[i] + r01 * w.Lateral[i] + r02 * w.Vertical[i];
         public double Lateral(SignalWindow w, int i) => r10 * w.Forward[i] + r11 * w.Lateral[i] + r12 * w.Vertical[i];
         public double Vertical(SignalWindow w, int i) => r20 * w.Forward[i] + r21 * w.Lateral[i] + r22 * w.Vertical[i];

@@ -33,7 +33,7 @@ namespace HeadGait
             if (samples < 2 || samples > 1000) throw new ArgumentException("A window needs 2..1000 samples.", nameof(samples));
             if (step < 1 || step > samples || samples % step != 0) throw new ArgumentException("The step must divide the window length.", nameof(step));
             if (channels == null || channels.Count == 0) throw new ArgumentException("At least one channel is needed.", nameof(channels));
-            if (levelTolerance.HasValue && !(levelTolerance.Value >= 0 && levelTolerance.Value <= 90)) throw new ArgumentException("The levelling tolerance is 0..90 degrees.", nameof(levelTolerance));
+            if (levelTolerance.HasValue && !WindowLevel.IsTolerance(levelTolerance.Value)) throw new ArgumentException("The levelling tolerance is 0..90 degrees.", nameof(levelTolerance));
             Samples = samples;
             Step = step;
             Channels = new List<WindowChannel>(channels).ToArray();
@@ -73,26 +73,15 @@ namespace HeadGait
                 double mean = 0;
                 if (channel != WindowChannel.Smv)
                 {
-                    for (int i = first; i < window.Length; i++) mean += Value(window, channel, level, i);
+                    for (int i = first; i < window.Length; i++) mean += level.Read(window, channel, i);
                     mean /= Samples;
                 }
                 for (int t = 0; t < TimeSteps; t++)
                 {
                     double sum = 0;
-                    for (int i = first + t * Step; i < first + (t + 1) * Step; i++) sum += Value(window, channel, level, i);
+                    for (int i = first + t * Step; i < first + (t + 1) * Step; i++) sum += level.Read(window, channel, i);
                     destination[t * c + ch] = sum * inv - mean;
                 }
-            }
-        }
-
-        static double Value(SignalWindow w, WindowChannel channel, in WindowLevel level, int i)
-        {
-            switch (channel)
-            {
-                case WindowChannel.Smv: return w.Smv[i];
-                case WindowChannel.Lateral: return level.Lateral(w, i);
-                case WindowChannel.Forward: return level.Forward(w, i);
-                default: return level.Vertical(w, i);
             }
         }
 
@@ -122,7 +111,7 @@ namespace HeadGait
                     case "samples": samples = ParseInt(value, key); break;
                     case "step": step = ParseInt(value, key); break;
                     case "level":
-                        if (!double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out double tolerance) || !(tolerance >= 0 && tolerance <= 90))
+                        if (!WindowLevel.TryParseTolerance(value, out double tolerance))
                             throw new FormatException($"feature spec 'level' is '{value}', not a tilt of 0..90 degrees");
                         level = tolerance;
                         break;
