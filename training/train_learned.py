@@ -426,7 +426,8 @@ def main():
     path = os.path.join(refdir, "training.json")
     try:
         with open(path, encoding="utf-8") as f:
-            earlier = json.load(f).get("report", {})
+            earlier = json.load(f)
+        earlier = earlier.get("report", {}) if isinstance(earlier, dict) else {}
     except (OSError, ValueError):
         earlier = {}
     earlier.update(report)
