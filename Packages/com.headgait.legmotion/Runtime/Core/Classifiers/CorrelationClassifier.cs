@@ -160,8 +160,8 @@ namespace HeadGait
         }
 
         public string Name => "COR";
-        /// <summary>History read: the longest step searched, and the walking gate's second.</summary>
-        public int WindowLength => Math.Max(SearchLength, WalkingGate.HistorySamples);
+        /// <summary>History read: the longest step searched, and what the walking gate reads.</summary>
+        public int WindowLength => Math.Max(SearchLength, template.Gate.History);
 
         /// <summary>Newest samples the step search correlates (the longest step).</summary>
         int SearchLength => settings.MaxStepSamples;

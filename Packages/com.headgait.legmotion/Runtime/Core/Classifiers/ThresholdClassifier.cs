@@ -164,8 +164,8 @@ namespace HeadGait
         }
 
         public string Name => "THR";
-        /// <summary>History read: a second, for the sideways profile and the walking gate.</summary>
-        public int WindowLength => Math.Max(ThresholdSettings.ProfileSamples, WalkingGate.HistorySamples);
+        /// <summary>History read: a second, for the sideways profile, and what the walking gate reads.</summary>
+        public int WindowLength => Math.Max(ThresholdSettings.ProfileSamples, settings.Gate.History);
         public PhaseMap PhaseMap => settings.PhaseMap;
         public ThresholdSettings Settings => settings;
         public StepClock Clock => clock;

@@ -15,7 +15,8 @@ namespace HeadGait
     /// so it can also refuse a head that swings too hard sideways or forwards: a child's wave swings the head sideways
     /// four times as hard as a walk, and a gate linear in the features took more movement for more walking. Gestures move
     /// the head sideways and forwards, walking bounces it up and down at step frequency with sharp heel strikes; a
-    /// threshold on SMV alone (or a fixed correlation) confuses waving with calm walking.
+    /// threshold on SMV alone (or a fixed correlation) confuses waving with calm walking. A gate may also pass what its
+    /// regression refuses when the newest 2.5 s keep a walking rhythm (<see cref="UsesStepRhythm"/>, <see cref="StepRhythm"/>).
     /// </summary>
     public sealed class WalkingGate
     {
@@ -51,11 +52,13 @@ namespace HeadGait
 
         readonly double[] weights; // InputCount weights, then the bias
         readonly double? levelTolerance;
+        readonly bool usesStepRhythm;
         readonly double[] features = new double[FeatureCount];
         readonly double[] inputs = new double[InputCount];
 
         /// <param name="levelTolerance">Tilt (degrees) beyond which the spreads are read from a levelled window (<see cref="Features"/>); null: as the head frame gives them.</param>
-        public WalkingGate(double[] weights, double? levelTolerance = null)
+        /// <param name="usesStepRhythm">Also pass a window that keeps a walking rhythm (<see cref="HeadGait.StepRhythm"/>) whatever its score.</param>
+        public WalkingGate(double[] weights, double? levelTolerance = null, bool usesStepRhythm = false)
         {
             if (weights == null || weights.Length != WeightCount) throw new ArgumentException($"A walking gate has {WeightCount} weights.");
             foreach (var w in weights)
@@ -63,7 +66,20 @@ namespace HeadGait
             if (levelTolerance.HasValue && !WindowLevel.IsTolerance(levelTolerance.Value)) throw new ArgumentException("A walking gate's levelling tolerance is 0..90 degrees.");
             this.weights = (double[])weights.Clone();
             this.levelTolerance = levelTolerance;
+            this.usesStepRhythm = usesStepRhythm;
         }
+
+        /// <summary>
+        /// Whether a window the regression refuses still passes when the newest 2.5 s keep a walking rhythm
+        /// (<see cref="HeadGait.StepRhythm"/>): a calm, slow walker moves the head as little as a gesture does.
+        /// </summary>
+        public bool UsesStepRhythm => usesStepRhythm;
+
+        /// <summary>This gate, also passing windows that keep a walking rhythm.</summary>
+        public WalkingGate WithStepRhythm() => new WalkingGate(weights, levelTolerance, true);
+
+        /// <summary>Samples of history (at 100 Hz) the gate reads: a second, or the rhythm's 2.5 s.</summary>
+        public int History => usesStepRhythm ? Math.Max(HistorySamples, StepRhythm.HistorySamples) : HistorySamples;
 
         /// <summary>Tilt (degrees) beyond which the gate reads its spreads from a levelled window; null: never levelled.</summary>
         public double? LevelTolerance => levelTolerance;
@@ -103,7 +119,8 @@ namespace HeadGait
                 for (int j = i; j < MultipliedCount; j++) x[k++] = g[i] * g[j];
         }
 
-        public bool Passes(SignalWindow window) => Score(window) > 0;
+        /// <summary>Whether the window counts as walking: a positive score, or a walking rhythm where the gate listens for one.</summary>
+        public bool Passes(SignalWindow window) => Score(window) > 0 || (usesStepRhythm && StepRhythm.Of(window, levelTolerance).IsWalking);
 
         /// <summary>
         /// The gate's inputs for the newest 50 samples (or fewer right after a restart). With <paramref name="levelTolerance"/>
@@ -170,11 +187,15 @@ namespace HeadGait
         /// <summary>What a levelling gate's text starts with: <c>level:15;</c> then the weights.</summary>
         const string LevelPrefix = "level:";
 
+        /// <summary>What a gate that listens for the step rhythm has before its weights.</summary>
+        const string RhythmOption = "rhythm;";
+
         /// <summary>Reads a gate as <see cref="Serialize"/> writes it; a <see cref="FormatException"/> says what is wrong.</summary>
         public static WalkingGate Parse(string text)
         {
             text = text ?? "";
             double? level = null;
+            bool rhythm = false;
             if (text.StartsWith(LevelPrefix, StringComparison.Ordinal))
             {
                 int end = text.IndexOf(';');
@@ -184,6 +205,11 @@ namespace HeadGait
                 level = tolerance;
                 text = text.Substring(end + 1);
             }
+            if (text.StartsWith(RhythmOption, StringComparison.Ordinal))
+            {
+                rhythm = true;
+                text = text.Substring(RhythmOption.Length);
+            }
             var parts = text.Split(',');
             if (parts.Length != WeightCount && Array.IndexOf(OlderLengths(), parts.Length) < 0)
                 throw new FormatException($"a walking gate has {WeightCount} comma-separated weights (expected {WeightCount}, or {LinearWeightCount} or {LinearWeightCount - 1} from an older model), found {parts.Length}");
@@ -191,7 +217,7 @@ namespace HeadGait
             for (int i = 0; i < parts.Length; i++)
                 if (!double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out w[i]) || !ImuSample.IsFiniteNumber(w[i]) || Math.Abs(w[i]) > 1e4)
                     throw new FormatException($"walking gate weight {i + 1} is '{parts[i].Trim()}', not a finite number below 1e4");
-            return FromWeights(w, level);
+            return FromWeights(w, level, rhythm);
         }
 
         /// <summary>Weights of a gate written before the pairwise products: the seven features and the bias.</summary>
@@ -204,27 +230,28 @@ namespace HeadGait
         /// A gate from its weights as written (<see cref="WeightCount"/> or one of <see cref="OlderLengths"/>). An older linear gate weighs no products, and
         /// one written before the autocorrelation input weighs that at nothing: either decides as it did.
         /// </summary>
-        public static WalkingGate FromWeights(double[] w, double? levelTolerance = null)
+        public static WalkingGate FromWeights(double[] w, double? levelTolerance = null, bool usesStepRhythm = false)
         {
-            if (w == null || w.Length == WeightCount) return new WalkingGate(w, levelTolerance);
+            if (w == null || w.Length == WeightCount) return new WalkingGate(w, levelTolerance, usesStepRhythm);
             if (w.Length != LinearWeightCount && w.Length != LinearWeightCount - 1) return new WalkingGate(w); // refused, naming the count
             var linear = new double[FeatureCount];
             Array.Copy(w, linear, w.Length - 1);
-            return Linear(linear, w[w.Length - 1], levelTolerance);
+            return Linear(linear, w[w.Length - 1], levelTolerance, usesStepRhythm);
         }
 
-        static WalkingGate Linear(double[] featureWeights, double bias, double? levelTolerance = null)
+        static WalkingGate Linear(double[] featureWeights, double bias, double? levelTolerance = null, bool usesStepRhythm = false)
         {
             var full = new double[WeightCount];
             Array.Copy(featureWeights, full, FeatureCount);
             full[InputCount] = bias;
-            return new WalkingGate(full, levelTolerance);
+            return new WalkingGate(full, levelTolerance, usesStepRhythm);
         }
 
         public string Serialize()
         {
             var sb = new StringBuilder();
             if (levelTolerance.HasValue) sb.Append(LevelPrefix).Append(levelTolerance.Value.ToString("R", CultureInfo.InvariantCulture)).Append(';');
+            if (usesStepRhythm) sb.Append(RhythmOption);
             for (int i = 0; i < weights.Length; i++) sb.Append(i > 0 ? "," : "").Append(weights[i].ToString("R", CultureInfo.InvariantCulture));
             return sb.ToString();
         }

@@ -54,7 +54,8 @@ namespace HeadGait.Training
         /// through, the SVM's and BLSTM's <see cref="WalkingGate.LearnedPass"/> (they have a standing class of their own);
         /// all but COR's are also fitted on <see cref="CalmGateCopies"/> calm copies of each original and read their spreads
         /// levelled beyond <see cref="WindowLevel.ToleranceDegrees"/> (a head looking down at its legs; COR's, levelled, let
-        /// more bows through: standing shown as walking 2.6 to 2.7 %). Without standing to
+        /// more bows through: standing shown as walking 2.6 to 2.7 %). Every gate also passes a window that keeps a walking
+        /// rhythm (<see cref="StepRhythm"/>), so a calm, slow walker is not refused for moving as little as a gesture. Without standing to
         /// learn from, THR's and COR's gates are open and the learned classifiers' null (the models run ungated).
         /// </summary>
         public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training)
@@ -62,7 +63,8 @@ namespace HeadGait.Training
             try
             {
                 var calm = WalkingGate.TrainEach(WithCalmCopies(training), new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass }, WindowLevel.ToleranceDegrees);
-                return (calm[0], WalkingGate.Train(training, WalkingGate.DetectorPass), calm[1]);
+                var cor = WalkingGate.Train(training, WalkingGate.DetectorPass);
+                return (calm[0].WithStepRhythm(), cor.WithStepRhythm(), calm[1].WithStepRhythm());
             }
             catch (System.InvalidOperationException)
             {

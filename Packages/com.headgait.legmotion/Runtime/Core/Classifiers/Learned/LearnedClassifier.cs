@@ -88,7 +88,8 @@ namespace HeadGait
             PhaseMap = PhaseMap.WithStance(map.StanceSlope, map.ReferenceStridePeriod);
         }
         public WindowFeatures Features { get; }
-        public int WindowLength => Features.Samples;
+        /// <summary>History read: the model's window, and what the walking gate reads.</summary>
+        public int WindowLength => Math.Max(Features.Samples, Gate?.History ?? 0);
 
         /// <summary>Class scores of the last window (model-specific: probabilities for the BLSTM, votes for the SVM).</summary>
         public double[] LastScores => scores;

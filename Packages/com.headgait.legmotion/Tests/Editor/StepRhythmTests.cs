@@ -1,0 +1,176 @@
+using System;
+using System.Collections.Generic;
+using HeadGait.Synthetic;
+using HeadGait.Training;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    public class StepRhythmTests
+    {
+        /// <summary>Each full 2.5-s window's rhythm, with the time of its newest sample.</summary>
+        static List<(double Time, StepRhythm Rhythm)> Rhythms(Recording r, double? levelTolerance = null)
+        {
+            var list = new List<(double, StepRhythm)>();
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = StepRhythm.HistorySamples });
+            foreach (var s in r.Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    if (w.Count >= w.Length) list.Add((w.EndTime, StepRhythm.Of(w, levelTolerance)));
+                });
+            return list;
+        }
+
+        /// <summary>Windows whose newest <paramref name="span"/> seconds (default: all 2.5 s) carry the given label kind (walking or standing) on both feet.</summary>
+        static List<StepRhythm> Where(Recording r, List<(double Time, StepRhythm Rhythm)> rhythms, bool walking, double span = StepRhythm.HistorySamples / 100.0)
+        {
+            var kept = new List<StepRhythm>();
+            var rows = r.Samples;
+            int row = 0;
+            foreach (var (time, rhythm) in rhythms)
+            {
+                bool all = true;
+                while (row < rows.Count && rows[row].Imu.Time < time - span) row++;
+                for (int i = row; i < rows.Count && rows[i].Imu.Time <= time; i++)
+                    if ((rows[i].Left != GaitPhase.Standing) != walking || (rows[i].Right != GaitPhase.Standing) != walking) all = false;
+                if (all) kept.Add(rhythm);
+            }
+            return kept;
+        }
+
+        static double ShareWalking(List<StepRhythm> rhythms)
+        {
+            int n = 0;
+            foreach (var r in rhythms) if (r.IsWalking) n++;
+            return rhythms.Count == 0 ? double.NaN : (double)n / rhythms.Count;
+        }
+
+        static double MedianPeriod(List<StepRhythm> rhythms)
+        {
+            var p = new List<double>();
+            foreach (var r in rhythms) p.Add(r.Period);
+            p.Sort();
+            return p[p.Count / 2];
+        }
+
+        [Test]
+        public void AWalkKeepsItsRhythmHoweverCalm()
+        {
+            // The generated straight walk, and the same walk 30 % slower with every movement a fifth as large: the rhythm
+            // reads the shape, not the size, and finds the slower step period.
+            var walk = TestData.Eval("walk_straight");
+            var calm = RecordingAugmentation.Transform(walk, 1.3, 0.2, 0.2, 0.2, new AugmentationSettings().SlowWindowSeconds, "calm");
+            var brisk = Where(walk, Rhythms(walk), true);
+            var slow = Where(calm, Rhythms(calm), true);
+            Assert.That(brisk.Count, Is.GreaterThan(1000));
+            Assert.That(ShareWalking(brisk), Is.GreaterThan(0.9));
+            Assert.That(ShareWalking(slow), Is.GreaterThan(0.8));
+            double period = MedianPeriod(brisk);
+            Assert.That(period, Is.InRange(StepRhythm.ShortestStep, StepRhythm.LongestStep));
+            Assert.That(MedianPeriod(slow), Is.EqualTo(1.3 * period).Within(0.05));
+        }
+
+        [Test]
+        public void StandingWithNodsHasNoWalkingRhythm()
+        {
+            // The generated start-stop walk stands 4 s between walks, nodding: no window inside a stand keeps the rhythm,
+            // nor one whose newest second is standing after a walk, though its older samples still hold the walk's rhythm.
+            var rec = TestData.Eval("start_stop");
+            var rhythms = Rhythms(rec);
+            var standing = Where(rec, rhythms, false);
+            Assert.That(standing.Count, Is.GreaterThan(100));
+            Assert.That(ShareWalking(standing), Is.EqualTo(0));
+            var justStopped = Where(rec, rhythms, false, 1.0);
+            Assert.That(justStopped.Count, Is.GreaterThan(standing.Count + 300));
+            Assert.That(ShareWalking(justStopped), Is.EqualTo(0));
+            Assert.That(justStopped.FindAll(r => r.Bounce > StepRhythm.MinBounce && r.Sway < StepRhythm.MaxSway).Count, Is.GreaterThan(50),
+                "windows that still hold the walk's rhythm in their older samples");
+        }
+
+        [Test]
+        public void AWalkWithoutTheSidewaysSwayIsNoRhythm()
+        {
+            // The bounce alone is not a walk (a nod or a bob on the spot repeats too): the same walk with its sideways
+            // acceleration replaced by noise as large as the sway keeps no rhythm.
+            var walk = TestData.Eval("walk_straight");
+            var random = new DeterministicRandom(5);
+            var rows = new List<RecordedSample>();
+            foreach (var s in walk.Samples)
+                rows.Add(new RecordedSample(new ImuSample(s.Imu.Time, s.Imu.X, 0.3 * random.NextGaussian(), s.Imu.Z), s.Left, s.Right));
+            var noSway = new Recording("no sway", rows);
+            Assert.That(ShareWalking(Where(noSway, Rhythms(noSway), true)), Is.LessThan(0.01));
+            Assert.That(ShareWalking(Where(walk, Rhythms(walk), true)), Is.GreaterThan(0.9));
+        }
+
+        [Test]
+        public void ATiltedWalkKeepsItsRhythmLevelled()
+        {
+            var tilted = RecordingAugmentation.Tilted(TestData.Eval("walk_straight"));
+            Assert.That(ShareWalking(Where(tilted, Rhythms(tilted, WindowLevel.ToleranceDegrees), true)), Is.GreaterThan(0.9));
+        }
+
+        [Test]
+        public void TooShortAHistoryHasNoRhythm()
+        {
+            var walk = TestData.Eval("walk_straight");
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = StepRhythm.HistorySamples });
+            int seen = 0;
+            foreach (var s in walk.Samples)
+            {
+                pre.Push(s.Imu, w =>
+                {
+                    if (w.Count >= w.Length) return;
+                    seen++;
+                    Assert.That(StepRhythm.Of(w).Period, Is.EqualTo(0));
+                    Assert.That(StepRhythm.Of(w).IsWalking, Is.False);
+                });
+            }
+            Assert.That(seen, Is.GreaterThan(100));
+        }
+
+        [Test]
+        public void AGateThatListensForTheRhythmPassesACalmWalkItsScoreRefuses()
+        {
+            // A gate whose regression refuses everything: with the rhythm it passes the walk once 2.5 s of it are in the
+            // window, without it never; its text says so, and every classifier reading it keeps 2.5 s of history.
+            var w = new double[WalkingGate.WeightCount];
+            w[WalkingGate.InputCount] = -1;
+            var deaf = new WalkingGate(w, WindowLevel.ToleranceDegrees);
+            var listening = deaf.WithStepRhythm();
+            var calm = RecordingAugmentation.Transform(TestData.Eval("walk_straight"), 1.3, 0.2, 0.2, 0.2, new AugmentationSettings().SlowWindowSeconds, "calm");
+            int passed = 0, deafPassed = 0, windows = 0;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = listening.History });
+            foreach (var s in calm.Samples)
+                pre.Push(s.Imu, win =>
+                {
+                    if (win.Count < win.Length) return;
+                    windows++;
+                    if (listening.Passes(win)) passed++;
+                    if (deaf.Passes(win)) deafPassed++;
+                });
+            Assert.That(deafPassed, Is.EqualTo(0));
+            Assert.That(passed, Is.GreaterThan(windows / 2));
+
+            var text = listening.Serialize();
+            Assert.That(text, Does.StartWith("level:15;rhythm;"));
+            var read = WalkingGate.Parse(text);
+            Assert.That(read.UsesStepRhythm, Is.True);
+            Assert.That(read.LevelTolerance, Is.EqualTo(15));
+            Assert.That(read.Weights, Is.EqualTo(w));
+            Assert.That(WalkingGate.Parse(deaf.Serialize()).UsesStepRhythm, Is.False);
+            Assert.That(WalkingGate.Parse("rhythm;" + string.Join(",", w)).UsesStepRhythm, Is.True);
+
+            Assert.That(listening.History, Is.EqualTo(StepRhythm.HistorySamples));
+            Assert.That(deaf.History, Is.EqualTo(WalkingGate.HistorySamples));
+            var thr = new ThresholdClassifier(new ThresholdSettings { Gate = listening });
+            Assert.That(thr.WindowLength, Is.EqualTo(StepRhythm.HistorySamples));
+        }
+
+        [Test]
+        public void TrainedGatesListenForTheRhythm()
+        {
+            var gates = TestData.Gates;
+            Assert.That(gates.Threshold.UsesStepRhythm && gates.Correlation.UsesStepRhythm && gates.Learned.UsesStepRhythm, Is.True);
+        }
+    }
+}
