@@ -10,16 +10,7 @@ namespace HeadGait.Tests
     {
         /// <summary>Each full 2.5-s window's rhythm, with the time of its newest sample.</summary>
         static List<(double Time, StepRhythm Rhythm)> Rhythms(Recording r, double? levelTolerance = null)
-        {
-            var list = new List<(double, StepRhythm)>();
-            var pre = new StreamPreprocessor(new PreprocessorSettings { History = StepRhythm.HistorySamples });
-            foreach (var s in r.Samples)
-                pre.Push(s.Imu, w =>
-                {
-                    if (w.Count >= w.Length) list.Add((w.EndTime, StepRhythm.Of(w, levelTolerance)));
-                });
-            return list;
-        }
+            => TestData.PerWindow(r, StepRhythm.HistorySamples, w => (w.EndTime, StepRhythm.Of(w, levelTolerance)));
 
         /// <summary>Windows whose newest <paramref name="span"/> seconds (default: all 2.5 s) carry the given label kind (walking or standing) on both feet.</summary>
         static List<StepRhythm> Where(Recording r, List<(double Time, StepRhythm Rhythm)> rhythms, bool walking, double span = StepRhythm.HistorySamples / 100.0)
@@ -138,18 +129,9 @@ namespace HeadGait.Tests
             var deaf = new WalkingGate(w, WindowLevel.ToleranceDegrees);
             var listening = deaf.WithStepRhythm();
             var calm = RecordingAugmentation.Transform(TestData.Eval("walk_straight"), 1.3, 0.2, 0.2, 0.2, new AugmentationSettings().SlowWindowSeconds, "calm");
-            int passed = 0, deafPassed = 0, windows = 0;
-            var pre = new StreamPreprocessor(new PreprocessorSettings { History = listening.History });
-            foreach (var s in calm.Samples)
-                pre.Push(s.Imu, win =>
-                {
-                    if (win.Count < win.Length) return;
-                    windows++;
-                    if (listening.Passes(win)) passed++;
-                    if (deaf.Passes(win)) deafPassed++;
-                });
-            Assert.That(deafPassed, Is.EqualTo(0));
-            Assert.That(passed, Is.GreaterThan(windows / 2));
+            var decisions = TestData.PerWindow(calm, listening.History, win => (Listening: listening.Passes(win), Deaf: deaf.Passes(win)));
+            Assert.That(decisions.FindAll(d => d.Deaf).Count, Is.EqualTo(0));
+            Assert.That(decisions.FindAll(d => d.Listening).Count, Is.GreaterThan(decisions.Count / 2));
 
             var text = listening.Serialize();
             Assert.That(text, Does.StartWith("level:15;rhythm;"));

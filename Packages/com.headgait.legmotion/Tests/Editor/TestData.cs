@@ -90,9 +90,9 @@ namespace HeadGait.Tests
         public static ImuSample Still(double t) => new ImuSample(t, 0, 0, 9.80665);
 
         /// <summary>What <paramref name="read"/> makes of every full window (<paramref name="history"/> samples) of a recording.</summary>
-        public static List<double[]> PerWindow(Recording r, int history, Func<SignalWindow, double[]> read)
+        public static List<T> PerWindow<T>(Recording r, int history, Func<SignalWindow, T> read)
         {
-            var rows = new List<double[]>();
+            var rows = new List<T>();
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = history });
             foreach (var s in r.Samples)
                 pre.Push(s.Imu, w =>

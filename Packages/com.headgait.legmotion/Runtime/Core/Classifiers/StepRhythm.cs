@@ -39,12 +39,12 @@ namespace HeadGait
 
         StepRhythm(double period, double bounce, double sway, double stride, double forward, double recentSpread)
         {
-            RecentSpread = recentSpread;
             Period = period;
             Bounce = bounce;
             Sway = sway;
             Stride = stride;
             Forward = forward;
+            RecentSpread = recentSpread;
         }
 
         /// <summary>The step period (s) where SMV repeats best; 0 when the window holds too little history.</summary>
@@ -69,11 +69,11 @@ namespace HeadGait
             && RecentSpread >= MinRecentSpread;
 
         /// <summary>History the rhythm needs at the window's rate.</summary>
-        public static int HistoryCount(double sampleRate) => (int)Math.Round(HistorySamples * sampleRate / 100);
+        static int HistoryCount(double sampleRate) => (int)Math.Round(HistorySamples * sampleRate / 100);
 
         /// <summary>
-        /// Measures the rhythm over the window's newest 2.5 s, the lateral and forward channels levelled as <paramref name="level"/>
-        /// says (<see cref="WindowLevel"/>, over the same span). A window with less valid history has no rhythm (<see cref="Period"/> 0).
+        /// Measures the rhythm over the window's newest 2.5 s, the lateral and forward channels levelled beyond
+        /// <paramref name="levelTolerance"/> degrees (<see cref="WindowLevel"/>, over the same span; null: as the head frame gives them). A window with less valid history has no rhythm (<see cref="Period"/> 0).
         /// </summary>
         public static StepRhythm Of(SignalWindow w, double? levelTolerance = null)
         {
