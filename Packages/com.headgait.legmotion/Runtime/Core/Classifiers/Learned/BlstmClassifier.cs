@@ -96,13 +96,14 @@ namespace HeadGait
             {
                 int t = direction == 0 ? n : steps - 1 - n;
                 int xo = t * inputs;
+                // The recurrent product dominates the cost.
+                VectorMath.MultiplyRows(wh, 4 * hidden, h, hidden, gates);
                 for (int g = 0; g < 4 * hidden; g++)
                 {
                     double z = b[g];
                     int ri = g * inputs;
                     for (int i = 0; i < inputs; i++) z += wi[ri + i] * x[xo + i];
-                    // The recurrent product dominates the cost.
-                    gates[g] = z + VectorMath.Dot(wh, g * hidden, h, 0, hidden);
+                    gates[g] += z;
                 }
                 for (int j = 0; j < hidden; j++)
                 {

@@ -20,6 +20,7 @@ namespace HeadGait
         readonly int[] start, count;      // each class's support vectors
         readonly double[] kernel;
         readonly double[] decision;
+        readonly double[] share;          // [(K-1) x K]: each coefficient row over each class's vectors
 
         /// <summary>The SVM with the time filter (<see cref="PhaseSequenceFilter"/>).</summary>
         public SvmClassifier(ModelFile model) : this(model, new PhaseFilterSettings()) { }
@@ -50,6 +51,7 @@ namespace HeadGait
             intercept = model.Tensor("intercept", classes * (classes - 1) / 2);
             kernel = new double[vectors];
             decision = new double[intercept.Length];
+            share = new double[(classes - 1) * classes];
         }
 
         public SvmClassifier(string path) : this(ModelFile.Load(path)) { }
@@ -74,23 +76,25 @@ namespace HeadGait
 
         protected override void Score(double[] x, double[] votes)
         {
+            VectorMath.MultiplyRows(supportVectors, vectors, x, width, kernel);
             for (int s = 0; s < vectors; s++)
             {
-                double b = gamma * VectorMath.Dot(supportVectors, s * width, x, 0, width) + coef0, p = b;
+                double b = gamma * kernel[s] + coef0, p = b;
                 for (int d = 1; d < degree; d++) p *= b;
                 kernel[s] = p;
             }
+            // Each class's share of each coefficient row, over contiguous support vectors (vectorised): pair (i, j) adds
+            // class i's share of row j-1 and class j's share of row i, as LIBSVM lays the coefficients out.
+            for (int r = 0; r < classes - 1; r++)
+                for (int c = 0; c < classes; c++)
+                    share[r * classes + c] = VectorMath.Dot(dualCoef, r * vectors + start[c], kernel, start[c], count[c]);
             Array.Clear(votes, 0, classes);
             int pair = 0;
             for (int i = 0; i < classes; i++)
             {
                 for (int j = i + 1; j < classes; j++)
                 {
-                    // LIBSVM: class i's vectors carry coefficients in row j-1, class j's in row i.
-                    double sum = intercept[pair];
-                    int ri = (j - 1) * vectors, rj = i * vectors;
-                    for (int s = start[i]; s < start[i] + count[i]; s++) sum += dualCoef[ri + s] * kernel[s];
-                    for (int s = start[j]; s < start[j] + count[j]; s++) sum += dualCoef[rj + s] * kernel[s];
+                    double sum = intercept[pair] + share[(j - 1) * classes + i] + share[i * classes + j];
                     decision[pair] = sum;
                     if (sum > 0) votes[i]++;
                     else votes[j]++;
