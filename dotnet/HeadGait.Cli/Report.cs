@@ -12,7 +12,7 @@ namespace HeadGait.Cli
         static string P(double v) => F(100 * v, "F1");
 
         const string PhaseFormat = "{0,-20} {1,-9} {2,6} {3,6} {4,6} {5,6} {6,5} {7,5} {8,5} {9,8} {10,8} {11,7} {12,5}";
-        const string StepFormat = "{0,-20} {1,-9} {2,-6} {3,7} {4,6} {5,6} {6,6} {7,6} {8,6} {9,6} {10,6} {11,6}";
+        const string StepFormat = "{0,-20} {1,-9} {2,-6} {3,7} {4,6} {5,6} {6,6} {7,6} {8,6} {9,6} {10,6} {11,7} {12,6} {13,6}";
 
         public static void PhaseHeader()
         {
@@ -39,7 +39,7 @@ namespace HeadGait.Cli
         public static void StepHeader()
         {
             string h = string.Format(CultureInfo.InvariantCulture, StepFormat, "recordings", "clf", "output", "IC_ms", "IC_sd",
-                "recall", "prec%", "foot%", "walk>st", "st>walk", "bouts", "steps");
+                "recall", "prec%", "foot%", "walk>st", "st>walk", "bouts", "start_s", "stop_s", "steps");
             Console.WriteLine(h);
             Console.WriteLine(new string('-', h.Length));
         }
@@ -55,7 +55,8 @@ namespace HeadGait.Cli
                 if (m.Comparisons == 0) continue;
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture, StepFormat, Trim(label, 20), classifier, output,
                     F(m.StepTimingMeanMs, "F0"), F(m.StepTimingSdMs, "F0"), P(m.StepRecall), P(m.StepPrecision), P(m.StepRightFoot),
-                    P(m.WalkingAsStanding), P(m.StandingAsWalking), F(m.BoutsPerWalk, "F2"), m.TrueSteps));
+                    P(m.WalkingAsStanding), P(m.StandingAsWalking), F(m.BoutsPerWalk, "F2"),
+                    F(m.MeanStartDelaySeconds, "F2"), F(m.MeanStopDelaySeconds, "F2"), m.TrueSteps));
             }
         }
 
@@ -72,7 +73,8 @@ namespace HeadGait.Cli
             Console.WriteLine("delay_ms = predicted minus true phase onset (negative = early); ms/win = classifier CPU time per window on this machine; skip = unreadable rows + rejected samples.");
             Console.WriteLine("Steps: a contact is a foot entering stance from swing; IC_ms/IC_sd = predicted minus true contact time of matched steps (within 0.25 s);");
             Console.WriteLine("recall/prec% = true contacts found / predicted contacts that are real; foot% = matched steps on the right foot; walk>st = walking shown as standing, st>walk = standing shown as walking;");
-            Console.WriteLine("bouts = walking bouts shown per true walking bout (1: each walk shows as one; more: walks broken apart or gestures shown as walking).");
+            Console.WriteLine("bouts = walking bouts shown per true walking bout (1: each walk shows as one; more: walks broken apart or gestures shown as walking);");
+            Console.WriteLine("start_s/stop_s = mean seconds from a labelled start (stop) of walking to the shown one, over walks that start (stop) inside a recording (- when none do).");
         }
 
         /// <summary>A label cut to n characters, keeping its end: recordings of one take differ in their last digits.</summary>

@@ -48,6 +48,53 @@ namespace HeadGait.Tests
             Assert.That(GaitMetrics.Pool(new[] { m, m }).BoutsPerWalk, Is.EqualTo(3));
         }
 
+        /// <summary>Per-sample walking (true) or standing (false) at 100 Hz from the given runs of seconds, as phases.</summary>
+        static List<GaitPhase> Activity(params (bool walking, double seconds)[] runs)
+        {
+            var phases = new List<GaitPhase>();
+            foreach (var (walking, seconds) in runs)
+                for (int i = 0; i < (int)System.Math.Round(seconds * 100); i++)
+                    phases.Add(walking ? GaitPhase.MidStance : GaitPhase.Standing);
+            return phases;
+        }
+
+        static GaitMetrics CompareActivity(List<GaitPhase> truth, List<GaitPhase> predicted)
+        {
+            var t = new List<double>();
+            for (int i = 0; i < truth.Count; i++) t.Add(i * 0.01);
+            return GaitMetrics.Compute(t, truth, truth, predicted, predicted);
+        }
+
+        [Test]
+        public void StartAndStopDelaysMeasureEachWalkInsideTheRecording()
+        {
+            var truth = Activity((false, 1), (true, 3), (false, 1), (true, 2), (false, 1));
+            // The first walk shown 0.4 s late and 0.3 s too long; the second from 0.2 s early to 0.1 s short.
+            var shown = Activity((false, 1.4), (true, 2.9), (false, 0.5), (true, 2.1), (false, 1.1));
+            var m = CompareActivity(truth, shown);
+            Assert.That(m.Starts, Is.EqualTo(2));
+            Assert.That(m.Stops, Is.EqualTo(2));
+            Assert.That(m.MeanStartDelaySeconds, Is.EqualTo((0.4 - 0.2) / 2).Within(1e-9));
+            Assert.That(m.MeanStopDelaySeconds, Is.EqualTo((0.3 - 0.1) / 2).Within(1e-9));
+            var pooled = GaitMetrics.Pool(new[] { m, CompareActivity(truth, truth) });
+            Assert.That(pooled.Starts, Is.EqualTo(4));
+            Assert.That(pooled.MeanStartDelaySeconds, Is.EqualTo(0.2 / 4).Within(1e-9));
+        }
+
+        [Test]
+        public void WalksCutByTheRecordingOrNeverShownHaveNoStartOrStop()
+        {
+            // Walking at both edges: no start and no stop inside the recording.
+            var edges = CompareActivity(Activity((true, 2), (false, 1), (true, 2)), Activity((true, 5)));
+            Assert.That(edges.Starts, Is.EqualTo(1), "the second walk starts inside");
+            Assert.That(edges.Stops, Is.EqualTo(1), "the first walk stops inside");
+            Assert.That(edges.MeanStartDelaySeconds, Is.EqualTo(-3).Within(1e-9), "shown since the recording began");
+            Assert.That(edges.MeanStopDelaySeconds, Is.EqualTo(2.99).Within(1e-9), "still shown at the last sample");
+            var missed = CompareActivity(Activity((false, 1), (true, 1), (false, 1)), Activity((false, 3)));
+            Assert.That(missed.Starts + missed.Stops, Is.EqualTo(0));
+            Assert.That(double.IsNaN(missed.MeanStartDelaySeconds));
+        }
+
         [Test]
         public void LatePredictionHasPositiveDelay()
         {

@@ -21,6 +21,8 @@ namespace HeadGait
         int trueOnsets;
         int trueSteps, predictedSteps, matchedSteps, matchedSameFoot;
         readonly List<double> stepTimingMs = new List<double>();
+        readonly List<double> startDelays = new List<double>();
+        readonly List<double> stopDelays = new List<double>();
 
         /// <summary>Labelled (sample, foot) pairs compared.</summary>
         public long Comparisons => 2 * samples;
@@ -124,6 +126,21 @@ namespace HeadGait
             }
         }
 
+        /// <summary>
+        /// Walks that start inside a recording (standing labelled before them): seconds from the walk's first labelled
+        /// sample to the first sample of the predicted walking that overlaps it (negative: shown early). A walk cut by the
+        /// recording's start, or never shown, counts for neither this nor <see cref="MeanStopDelaySeconds"/>.
+        /// </summary>
+        public double MeanStartDelaySeconds => Mean(startDelays);
+        public int Starts => startDelays.Count;
+
+        /// <summary>
+        /// Walks that end inside a recording: seconds from the first standing sample after the walk to the first standing
+        /// sample after the predicted walking that overlaps its end (0 when it stops with the labels).
+        /// </summary>
+        public double MeanStopDelaySeconds => Mean(stopDelays);
+        public int Stops => stopDelays.Count;
+
         /// <summary>Compares aligned sequences of one recording.</summary>
         public static GaitMetrics Compute(IReadOnlyList<double> times,
             IReadOnlyList<GaitPhase> trueLeft, IReadOnlyList<GaitPhase> trueRight,
@@ -171,6 +188,7 @@ namespace HeadGait
             shownBouts += Bouts(predLeft);
             AddOnsetDelays(times, trueLeft, trueRight, predLeft, predRight);
             AddSteps(times, trueLeft, trueRight, predLeft, predRight);
+            AddStartsAndStops(times, trueLeft, predLeft);
         }
 
         /// <summary>The tallies of several recordings together.</summary>
@@ -200,6 +218,8 @@ namespace HeadGait
                 m.matchedSteps += p.matchedSteps;
                 m.matchedSameFoot += p.matchedSameFoot;
                 m.stepTimingMs.AddRange(p.stepTimingMs);
+                m.startDelays.AddRange(p.startDelays);
+                m.stopDelays.AddRange(p.stopDelays);
             }
             return m;
         }
@@ -216,6 +236,41 @@ namespace HeadGait
                 walking = now;
             }
             return bouts;
+        }
+
+        /// <summary>Start and stop delays of the walks inside the recording (standing is both feet's, so one foot tells).</summary>
+        void AddStartsAndStops(IReadOnlyList<double> times, IReadOnlyList<GaitPhase> truth, IReadOnlyList<GaitPhase> predicted)
+        {
+            int n = times.Count, i = 0;
+            while (i < n)
+            {
+                if (truth[i] == GaitPhase.Standing)
+                {
+                    i++;
+                    continue;
+                }
+                int from = i;
+                while (i < n && truth[i] != GaitPhase.Standing) i++;
+                int first = from;
+                while (first < i && predicted[first] == GaitPhase.Standing) first++;
+                if (first == i) continue; // never shown: recall and walking shown as standing count it
+                if (from > 0)
+                {
+                    // Shown from the walk's first sample: the predicted walking may have begun before it.
+                    if (first == from)
+                        while (first > 0 && predicted[first - 1] != GaitPhase.Standing) first--;
+                    startDelays.Add(times[first] - times[from]);
+                }
+                if (i < n)
+                {
+                    int end = i;
+                    while (end > from && predicted[end - 1] == GaitPhase.Standing) end--;
+                    if (end == i)
+                        while (end < n && predicted[end] != GaitPhase.Standing) end++;
+                    // A prediction still walking at the recording's end stops no earlier than its last sample.
+                    stopDelays.Add(times[Math.Min(end, n - 1)] - times[i]);
+                }
+            }
         }
 
         void AddOnsetDelays(IReadOnlyList<double> times,
