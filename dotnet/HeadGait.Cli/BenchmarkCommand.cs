@@ -26,20 +26,22 @@ namespace HeadGait.Cli
             var perRecording = new Option<string>("--per-recording") { Description = "also write every held-out recording's scores to this CSV (which recordings fail, and how)" };
             var earLike = new Option<bool>("--ear-like") { Description = $"also score each held-out clip with its sideways and forward acceleration halved and {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower, as a real ear-worn sensor and slower walkers differ from mocap-derived signals" };
             var tilted = new Option<bool>("--tilted") { Description = $"also score each held-out clip as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees would give it (a headset worn tilted, a head held looking down)" };
+            var turned = new Option<bool>("--turned") { Description = $"also score each held-out clip as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks would give it (looking around while walking)" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, tilted,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, tilted, turned,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(tilted)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(tilted), parse.GetValue(turned)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool tilted)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool tilted, bool turned)
         {
             // Held-out clips changed as a real sensor might differ from these recordings: each is scored by the same fold's classifiers.
             var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
             if (earLike) variants.Add(("ear-like", $"made ear-like (sideways and forward acceleration halved, {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower)", RecordingAugmentation.EarLike));
+            if (turned) variants.Add(("turned", $"as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks gives them", r => RecordingAugmentation.Turned(r)));
             if (tilted) variants.Add(("tilted", $"as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees gives them", r => RecordingAugmentation.Tilted(r)));
             var perRecordingRows = new List<RecordingScoresCsv.Row>();
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();

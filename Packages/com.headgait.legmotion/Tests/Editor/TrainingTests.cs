@@ -356,6 +356,29 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void ATurnedCopyMixesForwardIntoSidewaysAndKeepsTheVertical()
+        {
+            var rec = TestData.Eval("walk_straight");
+            var turned = RecordingAugmentation.Turned(rec);
+            Assert.That(turned.Name, Is.EqualTo(rec.Name));
+            Assert.That(turned.Samples.Count, Is.EqualTo(rec.Samples.Count));
+            double yaw = RecordingAugmentation.TurnedYawDegrees * Math.PI / 180;
+            for (int i = 0; i < rec.Samples.Count; i++)
+            {
+                ImuSample a = rec.Samples[i].Imu, b = turned.Samples[i].Imu;
+                Assert.That(turned.Samples[i].Right, Is.EqualTo(rec.Samples[i].Right));
+                Assert.That(b.Z, Is.EqualTo(a.Z));
+                Assert.That(b.X * b.X + b.Y * b.Y, Is.EqualTo(a.X * a.X + a.Y * a.Y).Within(1e-9));
+            }
+            // A head turned left sees the walk's forward push partly on its right (negative y): a pure forward
+            // acceleration of 1 shows as cos(yaw) forward and -sin(yaw) sideways.
+            var push = new Recording("push", new[] { new RecordedSample(new ImuSample(0, 1, 0, 9.81)) });
+            var seen = RecordingAugmentation.Turned(push).Samples[0].Imu;
+            Assert.That(seen.X, Is.EqualTo(Math.Cos(yaw)).Within(1e-12));
+            Assert.That(seen.Y, Is.EqualTo(-Math.Sin(yaw)).Within(1e-12));
+        }
+
+        [Test]
         public void StretchesTimeWithTheLabelsAndScalesOnlyTheDynamicPart()
         {
             var rec = TestData.Eval("walk_straight");

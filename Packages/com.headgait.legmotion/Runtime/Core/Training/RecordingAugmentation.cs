@@ -102,13 +102,35 @@ namespace HeadGait.Training
         {
             double pitch = pitchDegrees * Math.PI / 180, roll = rollDegrees * Math.PI / 180;
             double cp = Math.Cos(pitch), sp = Math.Sin(pitch), cr = Math.Cos(roll), sr = Math.Sin(roll);
+            return MapSamples(source, a =>
+            {
+                // Turned about y (pitch: at rest, specific force gains a forward part), then about the new x (roll).
+                double x = cp * a.X + sp * a.Z, z = -sp * a.X + cp * a.Z;
+                return new ImuSample(a.Time, x, cr * a.Y + sr * z, -sr * a.Y + cr * z);
+            });
+        }
+
+        /// <summary>How far <see cref="Turned"/> turns the head to the left of where it walks (degrees).</summary>
+        public const double TurnedYawDegrees = 30;
+
+        /// <summary>
+        /// The recording as a head turned <paramref name="yawDegrees"/> to the left of the walking direction would give it
+        /// (the benchmark's <c>--turned</c>: looking around while walking): the forward and sideways channels mix, the
+        /// vertical stays. Same name.
+        /// </summary>
+        public static Recording Turned(Recording source, double yawDegrees = TurnedYawDegrees)
+        {
+            double yaw = yawDegrees * Math.PI / 180, cy = Math.Cos(yaw), sy = Math.Sin(yaw);
+            return MapSamples(source, a => new ImuSample(a.Time, cy * a.X + sy * a.Y, -sy * a.X + cy * a.Y, a.Z));
+        }
+
+        /// <summary>A copy with every sample's acceleration mapped; labels, lines, name and metadata kept.</summary>
+        static Recording MapSamples(Recording source, Func<ImuSample, ImuSample> map)
+        {
             var output = new List<RecordedSample>(source.Samples.Count);
             foreach (var s in source.Samples)
             {
-                var a = s.Imu;
-                // Turned about y (pitch: at rest, specific force gains a forward part), then about the new x (roll).
-                double x = cp * a.X + sp * a.Z, z = -sp * a.X + cp * a.Z;
-                var imu = new ImuSample(a.Time, x, cr * a.Y + sr * z, -sr * a.Y + cr * z);
+                var imu = map(s.Imu);
                 output.Add(s.HasTruth ? new RecordedSample(imu, s.Left, s.Right, s.Line) : new RecordedSample(imu, s.Line));
             }
             var result = new Recording(source.Name, output);
