@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
@@ -82,6 +83,19 @@ namespace HeadGait.Tests
             Assert.That(following.GetRange(following.Count - 100, 100), Is.All.True, "a stride later the legs show what the model says");
             int firstFollowing = following.FindIndex(150, f => f);
             Assert.That(firstFollowing - 150, Is.LessThan(30), "held for at most a few segments (0.3 s)");
+        }
+
+        [Test]
+        public void TheSvmsHalfWeightEvidenceBreaksGeneratedWalksApartLessOften()
+        {
+            // Votes made into probabilities are overconfident: at full weight a few windows voting otherwise end a walk.
+            var model = GaitModels.Load(Models).Svm;
+            GaitMetrics Pooled(Func<SvmClassifier> make) => GaitMetrics.Pool(TestData.EvalSet().Select(r => ReplayEvaluator.Run(r, make()).ClassifierMetrics));
+            var half = Pooled(() => new SvmClassifier(model));
+            var full = Pooled(() => new SvmClassifier(model, new PhaseFilterSettings()));
+            Assert.That(new SvmClassifier(model).Filter.Settings.EvidenceWeight, Is.EqualTo(0.5));
+            Assert.That(half.ShownWalkingBouts, Is.LessThan(full.ShownWalkingBouts));
+            Assert.That(half.StepRecall, Is.GreaterThanOrEqualTo(full.StepRecall - 0.01), "without losing steps");
         }
 
         [Test]

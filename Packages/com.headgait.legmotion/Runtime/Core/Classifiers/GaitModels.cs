@@ -86,7 +86,7 @@ namespace HeadGait
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "svm":
                 case "svm-raw":
-                    if (Svm != null) return new SvmClassifier(Svm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : new PhaseFilterSettings());
+                    if (Svm != null) return new SvmClassifier(Svm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : SvmClassifier.DefaultFilter());
                     warning = $"SVM model unusable ({Describe(SvmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "cor":
