@@ -54,10 +54,14 @@ class Dataset:
         if self.X.shape[0] != len(self.y) or len(self.y) != len(self.file):
             raise SystemExit(f"{folder}: X, y and file disagree in length")
 
-    def rows(self, exclude_names=()):
-        """Indices of usable windows (labelled) whose recording is not excluded."""
+    def rows(self, exclude_names=(), starts_and_stops=True):
+        """Indices of usable windows (labelled) whose recording is not excluded; with starts_and_stops False, also
+        without the copies made into walks that start and stop (augmented == 2)."""
         excluded = np.array([self.names[i] in exclude_names for i in range(len(self.names))])
-        return np.where((self.y >= 0) & ~excluded[self.file])[0]
+        keep = (self.y >= 0) & ~excluded[self.file]
+        if not starts_and_stops:
+            keep &= self.augmented != 2
+        return np.where(keep)[0]
 
 
 def standardisation(X):
@@ -353,23 +357,29 @@ def main():
     if args.exclude:
         with open(args.exclude, encoding="utf-8") as f:
             exclude = {line.strip() for line in f if line.strip()}
-    rows = ds.rows(exclude)
-    X = np.asarray(ds.X[rows], dtype=np.float32)
-    y = ds.y[rows]
     os.makedirs(args.out, exist_ok=True)
     # Reference outputs and the training report are for checks, not for Unity: a '~' folder is not imported.
     refdir = os.path.join(args.out, "Reference~")
     os.makedirs(refdir, exist_ok=True)
-    mean, scale = standardisation(X)
-    Xs = ((X - mean) / scale).astype(np.float32)
     k = len(ds.classes)
-    T, C = X.shape[1], X.shape[2]
-    provenance = {"trained_on": f"{len(np.unique(ds.file[rows]))} recordings, {len(rows)} windows",
-                  "trainer": "training/train_learned.py"}
-    ref_idx = np.random.default_rng(SEED).choice(len(Xs), size=min(64, len(Xs)), replace=False)
     report = {}
+    standardised = {}  # model -> its training set's channel mean and scale
+
+    def training_set(starts_and_stops):
+        """Windows, classes, standardisation, provenance and reference rows of one model's training set."""
+        rows = ds.rows(exclude, starts_and_stops)
+        X = np.asarray(ds.X[rows], dtype=np.float32)
+        mean, scale = standardisation(X)
+        Xs = ((X - mean) / scale).astype(np.float32)
+        provenance = {"trained_on": f"{len(np.unique(ds.file[rows]))} recordings, {len(rows)} windows",
+                      "trainer": "training/train_learned.py"}
+        ref_idx = np.random.default_rng(SEED).choice(len(Xs), size=min(64, len(Xs)), replace=False)
+        return X, ds.y[rows], mean, scale, Xs, provenance, ref_idx
 
     if "blstm" in args.models.split(","):
+        # The BLSTM also learns from walks made to start and stop; the SVM gained nothing at starts from them.
+        X, y, mean, scale, Xs, provenance, ref_idx = training_set(True)
+        T, C = X.shape[1], X.shape[2]
         t0 = time.time()
         log(f"BLSTM: hidden {args.hidden}, dropout {args.dropout}, {args.epochs} epochs, lr {args.lr}, {len(X)} windows of {T}x{C}")
         model = train_blstm(X, y, mean, scale, k, args.hidden, args.dropout, args.epochs, args.lr, args.batch, SEED)
@@ -380,12 +390,15 @@ def main():
         write_model(os.path.join(refdir, "blstm.reference.bytes"), {"kind": "reference", "model": "blstm.bytes"},
                     [("inputs", Xs[ref_idx].astype(np.float64), "f64"), ("outputs", probs.astype(np.float64), "f64")])
         train_err = per_foot_error(blstm_probabilities(model, Xs[::7]).argmax(1), y[::7], ds.classes)
+        standardised["blstm"] = (mean, scale)
         report["blstm"] = {"seconds": round(time.time() - t0), "train_error": round(float(train_err), 4)}
         if not args.no_onnx:
             report["blstm"]["onnx_ops"] = export_blstm_onnx(os.path.join(args.out, "blstm.onnx"), model, T, C)
         log(f"  wrote {path} ({report['blstm']})")
 
     if "svm" in args.models.split(","):
+        X, y, mean, scale, Xs, provenance, ref_idx = training_set(False)
+        T, C = X.shape[1], X.shape[2]
         t0 = time.time()
         log(f"SVM: polynomial degree {args.svm_degree}, C {args.svm_c}, gamma {args.svm_gamma}, coef0 {args.svm_coef0}, up to {args.svm_windows} windows")
         gamma = args.svm_gamma if args.svm_gamma in ("scale", "auto") else float(args.svm_gamma)
@@ -406,6 +419,7 @@ def main():
                     [("inputs", Xs[ref_idx].astype(np.float64), "f64"), ("outputs", sk.astype(np.float64), "f64"),
                      ("predictions", svm.predict(flat).astype(np.float64), "f64")])
         sub = Xs[::29].reshape(len(Xs[::29]), -1).astype(np.float64)
+        standardised["svm"] = (mean, scale)
         report["svm"] = {"seconds": round(time.time() - t0), "support_vectors": int(len(sv)),
                          "train_error": round(float(per_foot_error(svm.predict(sub), y[::29], ds.classes)), 4)}
         if not args.no_onnx:
@@ -415,12 +429,11 @@ def main():
     if args.evaluate and exclude:
         held_out = np.array([ds.names[i] in exclude for i in range(len(ds.names))])[ds.file]
         test = np.where((ds.y >= 0) & held_out & (ds.augmented == 0))[0]
-        Xt = ((np.asarray(ds.X[test], dtype=np.float32) - mean) / scale).astype(np.float32)
         yt = ds.y[test]
-        if "blstm" in report:
-            report["blstm"]["heldout_error"] = round(float(per_foot_error(blstm_probabilities(model, Xt).argmax(1), yt, ds.classes)), 4)
-        if "svm" in report:
-            report["svm"]["heldout_error"] = round(float(per_foot_error(svm.predict(Xt.reshape(len(Xt), -1).astype(np.float64)), yt, ds.classes)), 4)
+        for name, (m, s) in standardised.items():
+            Xt = ((np.asarray(ds.X[test], dtype=np.float32) - m) / s).astype(np.float32)
+            predicted = blstm_probabilities(model, Xt).argmax(1) if name == "blstm" else svm.predict(Xt.reshape(len(Xt), -1).astype(np.float64))
+            report[name]["heldout_error"] = round(float(per_foot_error(predicted, yt, ds.classes)), 4)
         log(f"held-out windows: {len(test)}; " + ", ".join(f"{k} {v['heldout_error']}" for k, v in report.items()))
     # A run that trains one of the models keeps what an earlier run reported of the other.
     path = os.path.join(refdir, "training.json")

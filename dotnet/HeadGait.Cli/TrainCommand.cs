@@ -38,10 +38,11 @@ namespace HeadGait.Cli
             var exportOnly = new Option<bool>("--export-only") { Description = "export the learned classifiers' windows and stop (for experiments with training/train_learned.py)" };
             var cvOnly = new Option<bool>("--cv-only") { Description = "train only the cross-validation fold models (--cv), leaving the model folder as it is" };
             var resume = new Option<bool>("--resume") { Description = "keep fold models an interrupted run finished for the same held-out recordings (same features and settings are assumed)" };
+            var noStartStop = new Option<bool>("--no-start-stop") { Description = "leave out the BLSTM's copies of each walking recording made into a walk that starts and stops" };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
-                data, output, augment, learned, cv, cvModels, cvOnly, resume, features, stride, lead, work, python, pythonArgs, exportOnly,
+                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, features, stride, lead, work, python, pythonArgs, exportOnly,
             };
             command.SetAction(parse =>
             {
@@ -79,8 +80,10 @@ namespace HeadGait.Cli
                 var names = recordings.Select(r => r.Name).ToList();
                 var index = names.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => p.i);
                 var items = training.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name) }).ToList();
+                var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
+                items.AddRange(startStop.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = true, StartsAndStops = true }));
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir, parse.GetValue(lead));
-                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}; {summary.Unlabelled} have a label pair outside the stride segments and are not trained on");
+                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
 
                 string script = FindScript();

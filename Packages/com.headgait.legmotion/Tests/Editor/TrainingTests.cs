@@ -462,6 +462,58 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AStartStopCopyStandsThenWalksFromAToeOffToAContactAndStandsAgain()
+        {
+            var rec = TestData.Eval("walk_straight");
+            Assert.That(RecordingAugmentation.StartingAndStopping(rec, new DeterministicRandom(1)), Is.Null, "it stands in places: not one walk");
+            int from = rec.Samples.FindIndex(x => x.Left != GaitPhase.Standing);
+            int count = rec.Samples.FindIndex(from, x => x.Left == GaitPhase.Standing) - from;
+            var walk = new Recording("walk", rec.Samples.GetRange(from, count));
+            for (ulong seed = 1; seed <= 5; seed++)
+            {
+                var copy = RecordingAugmentation.StartingAndStopping(walk, new DeterministicRandom(seed));
+                Assert.That(RecordingAugmentation.OriginalName(copy.Name), Is.EqualTo("walk"));
+                var rows = copy.Samples;
+                int start = rows.FindIndex(x => x.Left != GaitPhase.Standing);
+                int stop = rows.FindLastIndex(x => x.Left != GaitPhase.Standing);
+                var settings = new RecordingAugmentation.StartStopSettings();
+                Assert.That(start / 100.0, Is.InRange(settings.MinStanding - 0.01, settings.MaxStanding + 0.01));
+                Assert.That((rows.Count - 1 - stop) / 100.0, Is.InRange(settings.MinStanding - 0.01, settings.MaxStanding + 0.01));
+                for (int i = start; i <= stop; i++)
+                    Assert.That(rows[i].Left != GaitPhase.Standing && rows[i].Right != GaitPhase.Standing, $"one walk, no standing inside (row {i})");
+                Assert.That(GaitPhases.IsSwing(rows[start].Left) ^ GaitPhases.IsSwing(rows[start].Right), "the walk begins as one foot leaves the ground");
+                Assert.That(rows[stop].Left == GaitPhase.InitialContact || rows[stop].Right == GaitPhase.InitialContact, "and ends as one lands");
+                for (int i = 1; i < rows.Count; i++) Assert.That(rows[i].Imu.Time - rows[i - 1].Imu.Time, Is.EqualTo(0.01).Within(1e-9));
+
+                // Standing barely moves; the walk's bounce grows from nothing, so the splice does not jump.
+                double Range(int a, int b)
+                {
+                    double lo = double.MaxValue, hi = double.MinValue;
+                    for (int i = a; i < b; i++)
+                    {
+                        lo = Math.Min(lo, rows[i].Imu.Z);
+                        hi = Math.Max(hi, rows[i].Imu.Z);
+                    }
+                    return hi - lo;
+                }
+                double walking = Range(start + 150, stop - 150);
+                Assert.That(Range(0, start), Is.LessThan(0.1 * walking));
+                Assert.That(Range(stop + 1, rows.Count), Is.LessThan(0.1 * walking));
+                Assert.That(Range(start - 5, start + 5), Is.LessThan(0.1 * walking));
+                Assert.That(Range(stop - 5, stop + 5), Is.LessThan(0.1 * walking));
+                // Speeding up pushes the head forwards, slowing down backwards.
+                double Forward(int a, int b)
+                {
+                    double sum = 0;
+                    for (int i = a; i < b; i++) sum += rows[i].Imu.X;
+                    return sum / (b - a);
+                }
+                Assert.That(Forward(start, start + 60) - Forward(0, start), Is.GreaterThan(0.3));
+                Assert.That(Forward(stop - 40, stop) - Forward(stop + 1, rows.Count), Is.LessThan(-0.3));
+            }
+        }
+
+        [Test]
         public void CopiesAreSeededByNameAndKeepTheirOriginalsName()
         {
             var a = GaitTraining.WithAugmentation(new[] { TestData.Eval("walk_straight") }, 3);
@@ -578,6 +630,33 @@ namespace HeadGait.Tests
                 string header = System.Text.Encoding.ASCII.GetString(x, 10, 118);
                 Assert.That(header, Does.Contain($"'shape': ({summary.Windows}, 25, 2)"));
                 Assert.That(File.ReadAllText(Path.Combine(dir, "dataset.txt")), Does.Contain("classes=" + segments.Names()));
+            }
+            finally
+            {
+                if (Directory.Exists(dir)) Directory.Delete(dir, true);
+            }
+        }
+
+        [Test]
+        public void MarksAugmentedCopiesOneAndWalksMadeToStartAndStopTwo()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "headgait-export-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var rec = TestData.Eval("start_stop");
+                var items = new[]
+                {
+                    new WindowDataset.Item { Recording = rec },
+                    new WindowDataset.Item { Recording = rec, Augmented = true },
+                    new WindowDataset.Item { Recording = rec, Augmented = true, StartsAndStops = true },
+                };
+                var summary = WindowDataset.Export(items, new[] { rec.Name }, WindowFeatures.Parse("samples:50 step:2 channels:smv"),
+                    new StrideSegments(TestData.Map), 10, dir);
+                var bytes = File.ReadAllBytes(Path.Combine(dir, "augmented.npy"));
+                long each = summary.Windows / 3;
+                Assert.That(bytes.Length, Is.EqualTo(128 + 4 * 3 * each));
+                for (long i = 0; i < 3 * each; i++)
+                    Assert.That(BitConverter.ToInt32(bytes, (int)(128 + 4 * i)), Is.EqualTo(i / each), $"window {i}");
             }
             finally
             {

@@ -49,6 +49,27 @@ namespace HeadGait.Training
         /// <summary>Seeds the calm copies (with each recording's name), apart from the training copies' seed.</summary>
         const ulong CalmSeed = 7;
 
+        /// <summary>Seeds the start-and-stop copies (with each recording's name).</summary>
+        const ulong StartStopSeed = 11;
+
+        /// <summary>
+        /// One copy of each original walking recording as a walk that starts and stops (an augmented variant made into
+        /// one by <see cref="RecordingAugmentation.StartingAndStopping"/>), for the learned classifiers' training windows:
+        /// the real recordings are cut from continuous walking, so without them the networks never see a walk begin or end.
+        /// </summary>
+        public static List<Recording> StartStopCopies(IReadOnlyList<Recording> recordings)
+        {
+            var list = new List<Recording>();
+            foreach (var rec in recordings)
+            {
+                if (!rec.HasTruth || RecordingAugmentation.IsCopy(rec.Name)) continue;
+                var random = new DeterministicRandom(StartStopSeed ^ DeterministicRandom.SeedFrom(rec.Name));
+                var copy = RecordingAugmentation.StartingAndStopping(RecordingAugmentation.Augment(rec, random), random);
+                if (copy != null) list.Add(copy);
+            }
+            return list;
+        }
+
         /// <summary>
         /// Each classifier's walking gate: THR's and COR's let <see cref="WalkingGate.DetectorPass"/> of the walking windows
         /// through, the SVM's and BLSTM's <see cref="WalkingGate.LearnedPass"/> (they have a standing class of their own);

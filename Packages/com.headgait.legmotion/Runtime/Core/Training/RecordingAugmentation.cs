@@ -124,6 +124,96 @@ namespace HeadGait.Training
             return MapSamples(source, a => new ImuSample(a.Time, cy * a.X + sy * a.Y, -sy * a.X + cy * a.Y, a.Z));
         }
 
+        /// <summary>Ranges of <see cref="StartingAndStopping"/>'s made-up starts and stops.</summary>
+        public sealed class StartStopSettings
+        {
+            /// <summary>Seconds of standing before the walk and after it.</summary>
+            public double MinStanding = 0.8, MaxStanding = 1.6;
+
+            /// <summary>Seconds over which the walk's bounce and sway grow from nothing at the start (and fade at the stop).</summary>
+            public double MinRamp = 0.3, MaxRamp = 0.7;
+
+            /// <summary>Walking speed gained at the start and lost at the stop (m/s), over the given seconds.</summary>
+            public double MinSpeed = 0.8, MaxSpeed = 1.4;
+            public double MinSpeedUp = 0.6, MaxSpeedUp = 1.2, MinSlowDown = 0.4, MaxSlowDown = 0.8;
+
+            /// <summary>Standing sway: up to this amplitude (m/s^2) per axis, at 0.2-1 Hz, over white noise of the given SD.</summary>
+            public double MaxSway = 0.05, StandingNoise = 0.03;
+        }
+
+        /// <summary>
+        /// A walking recording as a walk that starts and stops, for training classifiers that otherwise only see walking
+        /// cut from continuous walks: standing before and after (the head's mean specific force at the splice, slight sway
+        /// and sensor noise), the walk itself from a toe-off to an initial contact (as the mocap converter labels a bout),
+        /// its bounce and sway growing from nothing over the first step and fading over the last, and the push of speeding
+        /// up and slowing down (forwards in the head frame, also for the few walks sideways or backwards: their direction
+        /// is not recorded). Null when the recording is not walking throughout or too short for two steps.
+        /// </summary>
+        public static Recording StartingAndStopping(Recording source, DeterministicRandom random, StartStopSettings settings = null)
+        {
+            var s = settings ?? new StartStopSettings();
+            var rows = Uniform(source);
+            int n = rows.Count, margin = (int)Rate / 2;
+            foreach (var r in rows)
+                if (!r.HasTruth || r.Left == GaitPhase.Standing || r.Right == GaitPhase.Standing) return null;
+            var toeOffs = new List<int>();
+            var contacts = new List<int>();
+            for (int i = 1; i < n; i++)
+            {
+                if (ToeOff(rows[i - 1].Left, rows[i].Left) || ToeOff(rows[i - 1].Right, rows[i].Right)) toeOffs.Add(i);
+                if (Contact(rows[i - 1].Left, rows[i].Left) || Contact(rows[i - 1].Right, rows[i].Right)) contacts.Add(i);
+            }
+            toeOffs.RemoveAll(i => i < margin);
+            contacts.RemoveAll(i => i > n - 1 - margin);
+            if (toeOffs.Count == 0 || contacts.Count == 0) return null;
+            int first = toeOffs[Math.Min(toeOffs.Count - 1, (int)(random.NextDouble() * 2))];
+            int last = contacts[Math.Max(0, contacts.Count - 1 - (int)(random.NextDouble() * 2))];
+            if (last - first < 3 * margin) return null;
+
+            var (acc, slow) = Channels(rows, new AugmentationSettings().SlowWindowSeconds);
+            int before = (int)Math.Round(random.Uniform(s.MinStanding, s.MaxStanding) * Rate);
+            int after = (int)Math.Round(random.Uniform(s.MinStanding, s.MaxStanding) * Rate);
+            double rampIn = random.Uniform(s.MinRamp, s.MaxRamp), rampOut = random.Uniform(s.MinRamp, s.MaxRamp);
+            double speed = random.Uniform(s.MinSpeed, s.MaxSpeed);
+            double speedUp = random.Uniform(s.MinSpeedUp, s.MaxSpeedUp), slowDown = random.Uniform(s.MinSlowDown, s.MaxSlowDown);
+            var sway = new double[3][];
+            for (int k = 0; k < 3; k++)
+                sway[k] = new[] { random.Uniform(0, s.MaxSway), random.Uniform(0.2, 1.0), random.Uniform(0, 2 * Math.PI) };
+
+            var output = new List<RecordedSample>(before + last - first + 1 + after);
+            double t0 = rows[0].Imu.Time;
+            var v = new double[3];
+            void Standing(int at)
+            {
+                double t = output.Count / Rate;
+                for (int k = 0; k < 3; k++)
+                    v[k] = slow[k][at] + sway[k][0] * Math.Sin(2 * Math.PI * sway[k][1] * t + sway[k][2]) + s.StandingNoise * random.NextGaussian();
+                output.Add(new RecordedSample(new ImuSample(t0 + t, v[0], v[1], v[2]), GaitPhase.Standing, GaitPhase.Standing));
+            }
+            for (int j = 0; j < before; j++) Standing(first);
+            double walkSeconds = (last - first) / Rate;
+            for (int i = first; i <= last; i++)
+            {
+                double since = (i - first) / Rate, until = (last - i) / Rate;
+                double weight = SmoothStep(since / rampIn) * SmoothStep(until / rampOut);
+                // Raised-cosine accelerations whose integrals are the speed gained and lost.
+                double push = since < speedUp ? speed / speedUp * (1 - Math.Cos(2 * Math.PI * since / speedUp)) : 0;
+                if (until < slowDown) push -= speed / slowDown * (1 - Math.Cos(2 * Math.PI * until / slowDown));
+                for (int k = 0; k < 3; k++) v[k] = slow[k][i] + weight * (acc[k][i] - slow[k][i]);
+                v[0] += push;
+                output.Add(new RecordedSample(new ImuSample(t0 + output.Count / Rate, v[0], v[1], v[2]), rows[i].Left, rows[i].Right));
+            }
+            for (int j = 0; j < after; j++) Standing(last);
+            var result = new Recording(source.Name + (IsCopy(source.Name) ? "" : CopyMark.ToString())
+                + string.Format(System.Globalization.CultureInfo.InvariantCulture, "startstop{0:F1}s", walkSeconds), output);
+            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
+            return result;
+        }
+
+        static bool ToeOff(GaitPhase before, GaitPhase now) => GaitPhases.IsStance(before) && GaitPhases.IsSwing(now);
+        static bool Contact(GaitPhase before, GaitPhase now) => GaitPhases.IsSwing(before) && GaitPhases.IsStance(now);
+        static double SmoothStep(double x) => x <= 0 ? 0 : x >= 1 ? 1 : x * x * (3 - 2 * x);
+
         /// <summary>A copy with every sample's acceleration mapped; labels, lines, name and metadata kept.</summary>
         static Recording MapSamples(Recording source, Func<ImuSample, ImuSample> map)
         {
@@ -150,21 +240,10 @@ namespace HeadGait.Training
             var output = new List<RecordedSample>();
             if (rows.Count < 2) return new Recording(name, output);
             int n = rows.Count;
-            var acc = new double[3][];
-            for (int k = 0; k < 3; k++) acc[k] = new double[n];
-            for (int i = 0; i < n; i++)
-            {
-                acc[0][i] = rows[i].Imu.X;
-                acc[1][i] = rows[i].Imu.Y;
-                acc[2][i] = rows[i].Imu.Z;
-            }
-            int half = Math.Max(1, (int)Math.Round(slowWindowSeconds * Rate / 2));
+            var (acc, slow) = Channels(rows, slowWindowSeconds);
             double[] gains = { forwardGain, lateralGain, verticalGain };
             for (int k = 0; k < 3; k++)
-            {
-                var slow = MovingAverage(acc[k], half);
-                for (int i = 0; i < n; i++) acc[k][i] = slow[i] + gains[k] * (acc[k][i] - slow[i]);
-            }
+                for (int i = 0; i < n; i++) acc[k][i] = slow[k][i] + gains[k] * (acc[k][i] - slow[k][i]);
 
             double t0 = rows[0].Imu.Time;
             double duration = (n - 1) / Rate * stretch;
@@ -214,6 +293,23 @@ namespace HeadGait.Training
                 grid.Add(label.HasTruth ? new RecordedSample(imu, label.Left, label.Right) : new RecordedSample(imu));
             }
             return grid;
+        }
+
+        /// <summary>x, y and z of the rows, and their slow parts (moving averages over <paramref name="slowWindowSeconds"/>).</summary>
+        static (double[][] Acc, double[][] Slow) Channels(List<RecordedSample> rows, double slowWindowSeconds)
+        {
+            int n = rows.Count, half = Math.Max(1, (int)Math.Round(slowWindowSeconds * Rate / 2));
+            var acc = new double[3][];
+            var slow = new double[3][];
+            for (int k = 0; k < 3; k++) acc[k] = new double[n];
+            for (int i = 0; i < n; i++)
+            {
+                acc[0][i] = rows[i].Imu.X;
+                acc[1][i] = rows[i].Imu.Y;
+                acc[2][i] = rows[i].Imu.Z;
+            }
+            for (int k = 0; k < 3; k++) slow[k] = MovingAverage(acc[k], half);
+            return (acc, slow);
         }
 
         static double[] MovingAverage(double[] v, int half)

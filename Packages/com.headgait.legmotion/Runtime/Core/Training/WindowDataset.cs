@@ -10,7 +10,8 @@ namespace HeadGait.Training
     /// preprocessor produces from each recording (or every <c>stride</c>-th), its features as
     /// <see cref="WindowFeatures.Extract"/> makes them, and the class of the labels at the window's newest sample.
     /// Files (NumPy .npy, little-endian): X float32 [N, T, C], y int32 [N] (class; -1 where the label pair is not a
-    /// stride segment), file int32 [N] (recording index in files.tsv), augmented int32 [N] (1 for augmented copies), plus
+    /// stride segment), file int32 [N] (recording index in files.tsv), augmented int32 [N] (1 for augmented copies, 2 for copies made into
+    /// walks that start and stop), plus
     /// files.tsv and dataset.txt (features, classes, phase map).
     /// </summary>
     public static class WindowDataset
@@ -23,6 +24,12 @@ namespace HeadGait.Training
 
             /// <summary>An augmented copy: trained on, never scored.</summary>
             public bool Augmented;
+
+            /// <summary>
+            /// A copy made into a walk that starts and stops (<see cref="RecordingAugmentation.StartingAndStopping"/>): the
+            /// BLSTM trains on it, the SVM does not.
+            /// </summary>
+            public bool StartsAndStops;
         }
 
         public sealed class Summary
@@ -69,7 +76,7 @@ namespace HeadGait.Training
                             foreach (var v in buffer) x.Write((float)v);
                             y.Write(cls);
                             file.Write(item.FileIndex);
-                            augmented.Write(item.Augmented ? 1 : 0);
+                            augmented.Write(item.StartsAndStops ? 2 : item.Augmented ? 1 : 0);
                             summary.Windows++;
                             if (cls < 0) summary.Unlabelled++;
                             else summary.PerClass[cls]++;
