@@ -79,9 +79,12 @@ namespace HeadGait.Cli
                 var spec = WindowFeatures.Parse(parse.GetValue(features));
                 var names = recordings.Select(r => r.Name).ToList();
                 var index = names.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => p.i);
-                var items = training.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name) }).ToList();
+                WindowDataset.Item Item(Recording r, bool startsAndStops) => new WindowDataset.Item
+                {
+                    Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name), StartsAndStops = startsAndStops,
+                };
                 var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
-                items.AddRange(startStop.Select(r => new WindowDataset.Item { Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = true, StartsAndStops = true }));
+                var items = training.Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir, parse.GetValue(lead));
                 Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;

@@ -54,7 +54,7 @@ namespace HeadGait
                 var labels = f == 0 ? left : right;
                 for (int i = 1; i < labels.Count; i++)
                 {
-                    if (GaitPhases.IsStance(labels[i]) && GaitPhases.IsSwing(labels[i - 1]))
+                    if (GaitPhases.IsContact(labels[i - 1], labels[i]))
                         list.Add(new PhaseOnset((Foot)f, labels[i], times[i]));
                 }
             }

@@ -39,6 +39,12 @@ namespace HeadGait
 
         public static bool IsSwing(GaitPhase phase) => phase >= GaitPhase.InitialSwing && phase <= GaitPhase.TerminalSwing;
 
+        /// <summary>Whether a foot going from <paramref name="before"/> to <paramref name="now"/> lands (swing to stance).</summary>
+        public static bool IsContact(GaitPhase before, GaitPhase now) => IsSwing(before) && IsStance(now);
+
+        /// <summary>Whether a foot going from <paramref name="before"/> to <paramref name="now"/> lifts off (stance to swing).</summary>
+        public static bool IsToeOff(GaitPhase before, GaitPhase now) => IsStance(before) && IsSwing(now);
+
         public static Foot Other(Foot foot) => foot == Foot.Left ? Foot.Right : Foot.Left;
 
         /// <summary>

@@ -41,8 +41,8 @@ namespace HeadGait.Training
                             ic = toeOff = double.NaN;
                             continue;
                         }
-                        bool contact = GaitPhases.IsStance(labels[i]) && GaitPhases.IsSwing(labels[i - 1]);
-                        bool lift = GaitPhases.IsSwing(labels[i]) && GaitPhases.IsStance(labels[i - 1]);
+                        bool contact = GaitPhases.IsContact(labels[i - 1], labels[i]);
+                        bool lift = GaitPhases.IsToeOff(labels[i - 1], labels[i]);
                         if (lift && !double.IsNaN(ic)) toeOff = times[i];
                         if (!contact) continue;
                         ics.Add(times[i]);

@@ -160,8 +160,8 @@ namespace HeadGait.Training
             var contacts = new List<int>();
             for (int i = 1; i < n; i++)
             {
-                if (ToeOff(rows[i - 1].Left, rows[i].Left) || ToeOff(rows[i - 1].Right, rows[i].Right)) toeOffs.Add(i);
-                if (Contact(rows[i - 1].Left, rows[i].Left) || Contact(rows[i - 1].Right, rows[i].Right)) contacts.Add(i);
+                if (GaitPhases.IsToeOff(rows[i - 1].Left, rows[i].Left) || GaitPhases.IsToeOff(rows[i - 1].Right, rows[i].Right)) toeOffs.Add(i);
+                if (GaitPhases.IsContact(rows[i - 1].Left, rows[i].Left) || GaitPhases.IsContact(rows[i - 1].Right, rows[i].Right)) contacts.Add(i);
             }
             toeOffs.RemoveAll(i => i < margin);
             contacts.RemoveAll(i => i > n - 1 - margin);
@@ -210,8 +210,6 @@ namespace HeadGait.Training
             return result;
         }
 
-        static bool ToeOff(GaitPhase before, GaitPhase now) => GaitPhases.IsStance(before) && GaitPhases.IsSwing(now);
-        static bool Contact(GaitPhase before, GaitPhase now) => GaitPhases.IsSwing(before) && GaitPhases.IsStance(now);
         static double SmoothStep(double x) => x <= 0 ? 0 : x >= 1 ? 1 : x * x * (3 - 2 * x);
 
         /// <summary>A copy with every sample's acceleration mapped; labels, lines, name and metadata kept.</summary>

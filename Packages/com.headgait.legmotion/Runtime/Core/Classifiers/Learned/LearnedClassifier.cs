@@ -233,8 +233,8 @@ namespace HeadGait
             for (int k = 1; k <= forward; k++)
             {
                 int seg = (lastClass + k) % n, prev = (seg + n - 1) % n;
-                contact |= GaitPhases.IsSwing(Segments.Left(prev)) && GaitPhases.IsStance(Segments.Left(seg));
-                contact |= GaitPhases.IsSwing(Segments.Right(prev)) && GaitPhases.IsStance(Segments.Right(seg));
+                contact |= GaitPhases.IsContact(Segments.Left(prev), Segments.Left(seg));
+                contact |= GaitPhases.IsContact(Segments.Right(prev), Segments.Right(seg));
             }
             if (!contact) return;
             if (!double.IsNaN(lastContactTime))
