@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.CommandLine;
 using System.IO;
 using System.Linq;
+using HeadGait.Synthetic;
 using HeadGait.Training;
 
 namespace HeadGait.Cli
@@ -27,22 +28,26 @@ namespace HeadGait.Cli
             var earLike = new Option<bool>("--ear-like") { Description = $"also score each held-out clip with its sideways and forward acceleration halved and {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower, as a real ear-worn sensor and slower walkers differ from mocap-derived signals" };
             var tilted = new Option<bool>("--tilted") { Description = $"also score each held-out clip as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees would give it (a headset worn tilted, a head held looking down)" };
             var turned = new Option<bool>("--turned") { Description = $"also score each held-out clip as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks would give it (looking around while walking)" };
+            var startStop = new Option<bool>("--start-stop") { Description = "also score each held-out walking clip made into a walk that starts and stops (standing, the walk growing in from a toe-off and fading out to a contact, standing): how late each classifier starts and stops on people's steps" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, tilted, turned,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, tilted, turned, startStop,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(tilted), parse.GetValue(turned)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(startStop)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool tilted, bool turned)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool tilted, bool turned, bool startStop)
         {
-            // Held-out clips changed as a real sensor might differ from these recordings: each is scored by the same fold's classifiers.
+            // Held-out clips changed as a real sensor or walk might differ from these recordings: each is scored by the same fold's classifiers.
             var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
             if (earLike) variants.Add(("ear-like", $"made ear-like (sideways and forward acceleration halved, {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower)", RecordingAugmentation.EarLike));
             if (turned) variants.Add(("turned", $"as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks gives them", r => RecordingAugmentation.Turned(r)));
             if (tilted) variants.Add(("tilted", $"as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees gives them", r => RecordingAugmentation.Tilted(r)));
+            // Seeded by the clip's name, so every fold and classifier scores the same made-up starts and stops.
+            if (startStop) variants.Add(("start-stop", "made into walks that start and stop (walking clips only)",
+                r => RecordingAugmentation.StartingAndStopping(r, new DeterministicRandom(DeterministicRandom.SeedFrom(r.Name)))));
             var perRecordingRows = new List<RecordingScoresCsv.Row>();
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
@@ -63,7 +68,7 @@ namespace HeadGait.Cli
                 foreach (var fold in folds)
                 {
                     var test = fold.Test.Select(n => byName[n]).ToList();
-                    var variantTests = variants.Select(v => test.Select(v.Make).ToList()).ToList();
+                    var variantTests = variants.Select(v => test.Select(v.Make).Where(r => r != null).ToList()).ToList();
                     var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
                     if (train.Count == 0 || test.Count == 0) continue;
                     var map = PhaseMapTraining.Learn(train);
