@@ -81,12 +81,11 @@ namespace HeadGait.Tests
 
     public class CorrelationClassifierTests
     {
-        /// <summary>A stream whose SMV repeats the template step after step (period 0.55 s), left foot first.</summary>
-        static List<ImuSample> TemplateWalk(CorrelationTemplate t, double seconds, out List<double> contacts, double gain = 2.0)
+        /// <summary>A stream whose SMV repeats the template step after step (period 0.55 s unless given), left foot first.</summary>
+        static List<ImuSample> TemplateWalk(CorrelationTemplate t, double seconds, out List<double> contacts, double gain = 2.0, double step = 0.55)
         {
             var samples = new List<ImuSample>();
             contacts = new List<double>();
-            const double step = 0.55;
             for (int k = 1; k * step < seconds; k++) contacts.Add(k * step);
             for (int i = 0; i < seconds * 100; i++)
             {
@@ -157,6 +156,30 @@ namespace HeadGait.Tests
             double unreachable = FirstWalking(new CorrelationSettings { StartMargin = 1 });
             Assert.That(off, Is.GreaterThan(searched + 0.05));
             Assert.That(unreachable, Is.EqualTo(off));
+        }
+
+        [Test]
+        public void TheStandingSearchGuessesNoLongStepAndTheWalkThenFindsItsOwnPeriod()
+        {
+            // Steps of 0.85 s: the standing search tries steps up to 0.75 s here, so the walk starts from a guessed
+            // period, and the contacts that follow set the walk's own.
+            var t = TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
+            var settings = new CorrelationSettings { StartMaxStepSamples = 75 };
+            var cor = new CorrelationClassifier(t, settings);
+            var pipeline = new GaitPipeline(cor);
+            double startPeriod = double.NaN;
+            bool measuredAtStart = true;
+            pipeline.FrameProduced += (p, f) =>
+            {
+                if (!p.IsWalking || !double.IsNaN(startPeriod)) return;
+                startPeriod = cor.Clock.StepPeriod;
+                measuredAtStart = cor.Clock.PeriodMeasured;
+            };
+            foreach (var s in TemplateWalk(t, 8, out _, step: 0.85)) pipeline.Push(s);
+            Assert.That(startPeriod, Is.LessThanOrEqualTo(0.75 + 1e-9), "the start's guessed period");
+            Assert.That(measuredAtStart, Is.False);
+            Assert.That(cor.Clock.PeriodMeasured, Is.True);
+            Assert.That(cor.Clock.StepPeriod, Is.EqualTo(0.85).Within(0.03), "the walk's own period");
         }
 
         [Test]
@@ -286,6 +309,27 @@ namespace HeadGait.Tests
                 if (d > 0 && d < 0.5) back++;
             }
             return back;
+        }
+
+        [Test]
+        public void AStartedWalkTakesItsPeriodFromItsFirstIntervalNotFromTheGuess()
+        {
+            var clock = new StepClock(PhaseMap.Perry, new StepClockSettings { ContactsToStart = 1 });
+            foreach (var t in new[] { 0.0, 0.5, 1.0 }) clock.Contact(t, t == 0.5 ? -1 : 1);
+            Assert.That(clock.PeriodMeasured, Is.True);
+            Assert.That(clock.StepPeriod, Is.EqualTo(0.5).Within(1e-9));
+
+            // That walk ran out without a stop; a detector starts a new one guessing 0.9 s steps.
+            clock.Start(3.0, 1, 0.9);
+            Assert.That(clock.PeriodMeasured, Is.False);
+            clock.Contact(3.55, -1);
+            Assert.That(clock.PeriodMeasured, Is.True);
+            Assert.That(clock.StepPeriod, Is.EqualTo(0.55).Within(1e-9), "the first interval replaces the guess");
+            clock.Contact(4.15, 1);
+            Assert.That(clock.StepPeriod, Is.EqualTo(0.7 * 0.55 + 0.3 * 0.6).Within(1e-9), "later intervals are smoothed in");
+
+            clock.Stop();
+            Assert.That(clock.PeriodMeasured, Is.False);
         }
 
         [Test]

@@ -74,6 +74,7 @@ namespace HeadGait
         double period;
         double sideEvidence;
         int contactsInBout;
+        bool periodMeasured;
         Foot lastFoot;
         double reported = double.NaN; // the stride position last predicted; NaN after standing
 
@@ -89,12 +90,16 @@ namespace HeadGait
         public double LastContactTime => lastContact;
         public Foot LastFoot => lastFoot;
 
+        /// <summary>Whether the step period comes from an interval between two contacts of this bout, not from a guess.</summary>
+        public bool PeriodMeasured => periodMeasured;
+
         public void Reset()
         {
             lastContact = double.NegativeInfinity;
             period = settings.InitialStepPeriod;
             sideEvidence = 0;
             contactsInBout = 0;
+            periodMeasured = false;
             lastFoot = Foot.Left;
             reported = double.NaN;
             stance.Reset();
@@ -111,11 +116,16 @@ namespace HeadGait
             if (interval > settings.MaxStepInterval)
             {
                 contactsInBout = 1;
+                periodMeasured = false;
                 sideEvidence = leftEvidence;
             }
             else
             {
-                if (contactsInBout >= 1) period = contactsInBout == 1 ? interval : 0.7 * period + 0.3 * interval;
+                if (contactsInBout >= 1)
+                {
+                    period = periodMeasured ? 0.7 * period + 0.3 * interval : interval;
+                    periodMeasured = true;
+                }
                 contactsInBout++;
                 // The previous contact was the other foot: its evidence counts against this one being the same side.
                 sideEvidence = leftEvidence - settings.SideMemory * sideEvidence;
@@ -135,6 +145,7 @@ namespace HeadGait
             sideEvidence = leftEvidence;
             lastFoot = leftEvidence >= 0 ? Foot.Left : Foot.Right;
             period = stepPeriod;
+            periodMeasured = false;
             contactsInBout = Math.Max(contactsInBout, settings.ContactsToStart);
         }
 
@@ -142,6 +153,7 @@ namespace HeadGait
         public void Stop()
         {
             contactsInBout = 0;
+            periodMeasured = false;
             lastContact = double.NegativeInfinity;
         }
 

@@ -115,6 +115,7 @@ namespace HeadGait
 
         /// <summary>Predicted minus true contact time of matched steps (ms): mean and standard deviation.</summary>
         public double StepTimingMeanMs => Mean(stepTimingMs);
+        public double StepTimingMedianMs => Median(stepTimingMs);
         public double StepTimingSdMs
         {
             get
