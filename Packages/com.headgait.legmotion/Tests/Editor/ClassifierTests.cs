@@ -182,6 +182,39 @@ namespace HeadGait.Tests
             Assert.That(cor.Clock.StepPeriod, Is.EqualTo(0.85).Within(0.03), "the walk's own period");
         }
 
+        /// <summary>
+        /// A walk of 0.55 s steps whose clock is restarted at 2 s as if a start had guessed 0.75 s steps (the last contact
+        /// right, at 1.65 s): the step period COR's clock holds after the next contact.
+        /// </summary>
+        static double PeriodAfterAGuessedStart(int firstStepTolerance)
+        {
+            var t = TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
+            var cor = new CorrelationClassifier(t, new CorrelationSettings { FirstStepTolerance = firstStepTolerance });
+            var pipeline = new GaitPipeline(cor);
+            double period = double.NaN;
+            cor.ContactDetected += (time, e, r, k) =>
+            {
+                if (time > 2 && double.IsNaN(period)) period = cor.Clock.StepPeriod;
+            };
+            foreach (var s in TemplateWalk(t, 4, out _))
+            {
+                if (Math.Abs(s.Time - 2.0) < 1e-9)
+                {
+                    cor.Clock.Stop();
+                    cor.Clock.Start(1.65, -1, 0.75);
+                }
+                pipeline.Push(s);
+            }
+            return period;
+        }
+
+        [Test]
+        public void AWalksFirstContactIsSearchedWidelyAroundAGuessedPeriod()
+        {
+            Assert.That(PeriodAfterAGuessedStart(20), Is.EqualTo(0.55).Within(0.02));
+            Assert.That(PeriodAfterAGuessedStart(6), Is.Not.EqualTo(0.55).Within(0.05), "searched as narrowly as a measured period");
+        }
+
         [Test]
         public void AStepShapedBobTooSmallForAStepIsNoWalk()
         {
