@@ -216,6 +216,18 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void SearchSettingsOutOfRangeAreRefusedNamingTheSetting()
+        {
+            var t = TestData.Template;
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { MaxStepSamples = 20 }), Throws.ArgumentException.With.Message.Contains("Step search range"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { PeakConfirmSamples = 0 }), Throws.ArgumentException.With.Message.Contains("PeakConfirmSamples"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { StartMaxStepSamples = 10 }), Throws.ArgumentException.With.Message.Contains("StartMaxStepSamples"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { FirstStepTolerance = -1 }), Throws.ArgumentException.With.Message.Contains("FirstStepTolerance"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { PeriodTolerance = -1 }), Throws.ArgumentException.With.Message.Contains("PeriodTolerance"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { StartMaxStepSamples = 30, FirstStepTolerance = 0 }), Throws.Nothing);
+        }
+
+        [Test]
         public void AStepShapedBobTooSmallForAStepIsNoWalk()
         {
             var smv = TestData.Template.Templates[0].Smv;

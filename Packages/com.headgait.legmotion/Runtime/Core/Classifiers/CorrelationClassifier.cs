@@ -113,6 +113,7 @@ namespace HeadGait
                 throw new ArgumentException("Step search range must satisfy 8 <= MinStepSamples <= MaxStepSamples <= 400.");
             if (s.PeakConfirmSamples < 1 || s.PeakConfirmSamples > 50) throw new ArgumentException("PeakConfirmSamples must be 1..50.");
             if (s.StartMaxStepSamples < s.MinStepSamples) throw new ArgumentException("StartMaxStepSamples must be at least MinStepSamples.");
+            if (s.PeriodTolerance < 0 || s.FirstStepTolerance < 0) throw new ArgumentException("PeriodTolerance and FirstStepTolerance must not be negative.");
             minCorrelation = double.IsNaN(s.MinCorrelationOverride) ? template.MinCorrelation : s.MinCorrelationOverride;
             var clockSettings = s.Clock.Clone();
             clockSettings.Lead = template.ClockLead;
