@@ -81,6 +81,9 @@ namespace HeadGait.Tests
 
     public class CorrelationClassifierTests
     {
+        /// <summary>The test template with its gate always open, no clock lead and no contact lag: contacts land where the steps do.</summary>
+        static CorrelationTemplate OpenTemplate => TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
+
         /// <summary>A stream whose SMV repeats the template step after step (period 0.55 s unless given), left foot first.</summary>
         static List<ImuSample> TemplateWalk(CorrelationTemplate t, double seconds, out List<double> contacts, double gain = 2.0, double step = 0.55)
         {
@@ -103,7 +106,7 @@ namespace HeadGait.Tests
         [Test]
         public void DetectsEachContactOfAStreamMadeOfTheTemplate()
         {
-            var t = TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
+            var t = OpenTemplate;
             var cor = new CorrelationClassifier(t);
             var detected = new List<(double time, double evidence)>();
             cor.ContactDetected += (time, evidence, r, template) => detected.Add((time, evidence));
@@ -163,7 +166,7 @@ namespace HeadGait.Tests
         {
             // Steps of 0.85 s: the standing search tries steps up to 0.75 s here, so the walk starts from a guessed
             // period, and the contacts that follow set the walk's own.
-            var t = TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
+            var t = OpenTemplate;
             var settings = new CorrelationSettings { StartMaxStepSamples = 75 };
             var cor = new CorrelationClassifier(t, settings);
             var pipeline = new GaitPipeline(cor);
@@ -188,7 +191,7 @@ namespace HeadGait.Tests
         /// </summary>
         static double PeriodAfterAGuessedStart(int firstStepTolerance)
         {
-            var t = TestData.Template.With(gate: WalkingGate.Open, clockLead: 0).WithLag(0);
+            var t = OpenTemplate;
             var cor = new CorrelationClassifier(t, new CorrelationSettings { FirstStepTolerance = firstStepTolerance });
             var pipeline = new GaitPipeline(cor);
             double period = double.NaN;

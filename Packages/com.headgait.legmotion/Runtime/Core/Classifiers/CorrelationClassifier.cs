@@ -93,13 +93,14 @@ namespace HeadGait
         readonly CorrelationSettings settings;
         readonly StepClock clock;
         readonly int periods;
+        readonly int startPeriods; // step lengths the standing search tries: the first StartMaxStepSamples - MinStepSamples + 1
         readonly double[][][] stepCurves;     // per template and step length P: the template at P samples, centred, unit norm
         readonly double[][][] lateralCurves;  // the same for the lateral templates
         readonly double[] prefix, prefixSq;
         readonly double[] recentR, recentEvidence, recentTime, recentSpan;
         readonly int[] recentTemplate;
         readonly double minCorrelation;
-        readonly double[][][] startNorm; // per template, step length and phase: the periodic template's spread over StartWindow samples
+        readonly double[][][] startNorm; // per template, start step length and phase: the periodic template's spread over StartWindow samples
         readonly double[] centred;
         int recentCount;
         int stillWindows;
@@ -119,6 +120,7 @@ namespace HeadGait
             clockSettings.Lead = template.ClockLead;
             clock = new StepClock(template.PhaseMap, clockSettings);
             periods = s.MaxStepSamples - s.MinStepSamples + 1;
+            startPeriods = Math.Min(periods, s.StartMaxStepSamples - s.MinStepSamples + 1);
             int templates = template.Templates.Count, L = s.StartWindow;
             stepCurves = new double[templates][][];
             lateralCurves = new double[templates][][];
@@ -127,12 +129,13 @@ namespace HeadGait
             {
                 stepCurves[t] = new double[periods][];
                 lateralCurves[t] = new double[periods][];
-                startNorm[t] = new double[periods][];
+                startNorm[t] = new double[startPeriods][];
                 for (int i = 0; i < periods; i++)
                 {
                     int p = s.MinStepSamples + i;
                     stepCurves[t][i] = Normalised(template.Templates[t].Smv, p);
                     lateralCurves[t][i] = Normalised(template.Templates[t].Lateral, p);
+                    if (i >= startPeriods) continue;
                     startNorm[t][i] = new double[p];
                     for (int k = 0; k < p; k++)
                     {
@@ -304,7 +307,6 @@ namespace HeadGait
             if (ss <= 1e-12) return;
             double norm = Math.Sqrt(ss), bestR = -1;
             int bestT = -1, bestI = -1, bestK = 0;
-            int longest = Math.Min(periods, settings.StartMaxStepSamples - settings.MinStepSamples + 1) - 1;
             for (int t = 0; t < stepCurves.Length; t++)
             {
                 // A coarse grid over step length and phase, then the neighbours of its best point.
@@ -312,7 +314,7 @@ namespace HeadGait
                 int ti = -1, tk = 0;
                 for (int pass = 0; pass < 2; pass++)
                 {
-                    int iFrom = pass == 0 ? 0 : Math.Max(0, ti - 1), iTo = pass == 0 ? longest : Math.Min(longest, ti + 1);
+                    int iFrom = pass == 0 ? 0 : Math.Max(0, ti - 1), iTo = pass == 0 ? startPeriods - 1 : Math.Min(startPeriods - 1, ti + 1);
                     int stride = pass == 0 ? 2 : 1;
                     int ci = ti, ck = tk;
                     for (int i = iFrom; i <= iTo; i += stride)

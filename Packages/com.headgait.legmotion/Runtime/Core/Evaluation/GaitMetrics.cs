@@ -113,7 +113,7 @@ namespace HeadGait
         /// <summary>Share of matched steps whose predicted contact is on the same foot as the true one.</summary>
         public double StepRightFoot => Ratio(matchedSameFoot, matchedSteps);
 
-        /// <summary>Predicted minus true contact time of matched steps (ms): mean and standard deviation.</summary>
+        /// <summary>Predicted minus true contact time of matched steps (ms): mean, median and standard deviation.</summary>
         public double StepTimingMeanMs => Mean(stepTimingMs);
         public double StepTimingMedianMs => Median(stepTimingMs);
         public double StepTimingSdMs
