@@ -186,6 +186,43 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
+        /// A second of standing, then a walk of <paramref name="step"/> s steps: COR's step period when the walk is first
+        /// shown, and right after the first contact that follows.
+        /// </summary>
+        static (double atStart, double afterFirstContact) PeriodsOfAWalkFromStanding(CorrelationSettings settings, double step)
+        {
+            var t = OpenTemplate;
+            settings.Clock.StandingAfterPeriods = 3; // the walk lasts until its first contact, however slow
+            var cor = new CorrelationClassifier(t, settings);
+            var pipeline = new GaitPipeline(cor);
+            double atStart = double.NaN, afterFirst = double.NaN;
+            pipeline.FrameProduced += (p, f) =>
+            {
+                if (p.IsWalking && double.IsNaN(atStart)) atStart = cor.Clock.StepPeriod;
+            };
+            cor.ContactDetected += (time, e, r, k) =>
+            {
+                if (!double.IsNaN(atStart) && double.IsNaN(afterFirst)) afterFirst = cor.Clock.StepPeriod;
+            };
+            for (int i = 0; i < 100; i++) pipeline.Push(new ImuSample(i * 0.01, 0, 0, 9.80665));
+            foreach (var s in TemplateWalk(t, 6, out _, step: step)) pipeline.Push(new ImuSample(1 + s.Time, s.X, s.Y, s.Z));
+            return (atStart, afterFirst);
+        }
+
+        [Test]
+        public void AWalkFromStandingRunsAtTheTypicalStepUntilItsFirstContactSearchedAroundTheMatchedLength()
+        {
+            // The window that starts the walk holds the onset of the movement: its matched length says nothing of the step.
+            var onset = PeriodsOfAWalkFromStanding(new CorrelationSettings(), 0.85);
+            Assert.That(onset.atStart, Is.EqualTo(new StepClockSettings().InitialStepPeriod), "the typical step until a contact");
+            // Searched around the typical 0.55 s (within FirstStepTolerance), a 0.85 s step would be out of reach.
+            Assert.That(onset.afterFirstContact, Is.EqualTo(0.85).Within(0.03), "the first contact, searched around the matched length");
+            var off = PeriodsOfAWalkFromStanding(new CorrelationSettings { OnsetSpanRatio = 0 }, 0.85);
+            Assert.That(off.atStart, Is.Not.EqualTo(new StepClockSettings().InitialStepPeriod).Within(0.02), "off: the matched length");
+            Assert.That(off.afterFirstContact, Is.EqualTo(0.85).Within(0.03));
+        }
+
+        /// <summary>
         /// A walk of 0.55 s steps whose clock is restarted at 2 s as if a start had guessed 0.75 s steps (the last contact
         /// right, at 1.65 s): the step period COR's clock holds after the next contact.
         /// </summary>
@@ -227,6 +264,8 @@ namespace HeadGait.Tests
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { StartMaxStepSamples = 10 }), Throws.ArgumentException.With.Message.Contains("StartMaxStepSamples"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { FirstStepTolerance = -1 }), Throws.ArgumentException.With.Message.Contains("FirstStepTolerance"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { PeriodTolerance = -1 }), Throws.ArgumentException.With.Message.Contains("PeriodTolerance"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { OnsetSpanRatio = double.NaN }), Throws.ArgumentException.With.Message.Contains("OnsetSpanRatio"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { OnsetSpanRatio = -1 }), Throws.ArgumentException.With.Message.Contains("OnsetSpanRatio"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { StartMaxStepSamples = 30, FirstStepTolerance = 0 }), Throws.Nothing);
         }
 
