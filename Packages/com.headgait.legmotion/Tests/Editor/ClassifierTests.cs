@@ -42,6 +42,10 @@ namespace HeadGait.Tests
             }
             Assert.That(back.MinCorrelation, Is.EqualTo(t.MinCorrelation));
             Assert.That(back.ClockLead, Is.EqualTo(t.ClockLead));
+            var bouncy = t.With(leadPerLogSpan: 0.02, leadReferenceSpan: 7.5);
+            var bouncyBack = CorrelationTemplate.Parse(bouncy.Serialize());
+            Assert.That(bouncyBack.LeadPerLogSpan, Is.EqualTo(0.02));
+            Assert.That(bouncyBack.LeadReferenceSpan, Is.EqualTo(7.5));
             Assert.That(back.Gate.Serialize(), Is.EqualTo(t.Gate.Serialize()));
             Assert.That(back.PhaseMap.Serialize(), Is.EqualTo(t.PhaseMap.Serialize()));
         }
@@ -57,9 +61,23 @@ namespace HeadGait.Tests
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("templates=", "templates=9\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("lacks 'step_smv."));
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("templates=", "templates=0\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("'templates'"));
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("min_correlation=", "min_correlation=1e309\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("min_correlation"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("clock_lead_per_log_span=", "clock_lead_per_log_span=0.5\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_per_log_span"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("clock_lead_reference_span=", "clock_lead_reference_span=0\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_reference_span"));
             string constant = "step_smv.0=" + string.Join(",", new string('1', CorrelationTemplate.StepPoints).ToCharArray());
             string withConstant = System.Text.RegularExpressions.Regex.Replace(good, "step_smv\\.0=[^\n]*", constant);
             Assert.That(() => CorrelationTemplate.Parse(withConstant), Throws.TypeOf<FormatException>().With.Message.Contains("constant"));
+        }
+
+        [Test]
+        public void ATemplateWithoutTheBounceLeadKeepsAFixedLead()
+        {
+            // Templates written before the lead followed the walker's bounce read as a fixed lead.
+            string good = TestData.Template.With(leadPerLogSpan: 0.02).Serialize();
+            string old = System.Text.RegularExpressions.Regex.Replace(good, "clock_lead_(per_log_span|reference_span)=[^\n]*\n", "");
+            Assert.That(old, Does.Not.Contain("per_log_span"));
+            var t = CorrelationTemplate.Parse(old);
+            Assert.That(t.LeadPerLogSpan, Is.EqualTo(0));
+            Assert.That(t.LeadReferenceSpan, Is.EqualTo(CorrelationTemplate.DefaultLeadReferenceSpan));
         }
 
         [Test]
@@ -183,6 +201,83 @@ namespace HeadGait.Tests
             Assert.That(measuredAtStart, Is.False);
             Assert.That(cor.Clock.PeriodMeasured, Is.True);
             Assert.That(cor.Clock.StepPeriod, Is.EqualTo(0.85).Within(0.03), "the walk's own period");
+        }
+
+        /// <summary>Times at which COR shows the left foot's initial contact begin, over a template walk of the given gain.</summary>
+        static List<double> ShownLeftContacts(CorrelationTemplate t, double gain)
+        {
+            var cor = new CorrelationClassifier(t);
+            var pipeline = new GaitPipeline(cor);
+            var shown = new List<double>();
+            GaitPhase before = GaitPhase.Standing;
+            pipeline.FrameProduced += (p, f) =>
+            {
+                if (p.Left == GaitPhase.InitialContact && before != GaitPhase.InitialContact && p.Time > 3) shown.Add(p.Time);
+                before = p.Left;
+            };
+            foreach (var s in TemplateWalk(t, 10, out _, gain)) pipeline.Push(s);
+            return shown;
+        }
+
+        /// <summary>Mean of the shown left contacts' offsets within half a step of the calm walk's (same steps, same times).</summary>
+        static double MeanShift(List<double> calm, List<double> bouncy)
+        {
+            double sum = 0;
+            int n = 0;
+            foreach (var b in bouncy)
+            {
+                double nearest = calm.OrderBy(c => Math.Abs(c - b)).First();
+                if (Math.Abs(nearest - b) > 0.275) continue;
+                sum += b - nearest;
+                n++;
+            }
+            Assert.That(n, Is.GreaterThan(5), "contacts shown on both walks");
+            return sum / n;
+        }
+
+        [Test]
+        public void ABouncierWalkLeadsTheClockByTheLearnedSlope()
+        {
+            // The same steps at 4 times the bounce: with 0.03 s per log unit the clock runs 0.03 * ln 4 = 42 ms further ahead.
+            var fixedLead = OpenTemplate;
+            var following = OpenTemplate.With(leadPerLogSpan: 0.03);
+            double shift = MeanShift(ShownLeftContacts(following, 2), ShownLeftContacts(following, 8));
+            Assert.That(shift, Is.EqualTo(-0.03 * Math.Log(4)).Within(0.012));
+            Assert.That(MeanShift(ShownLeftContacts(fixedLead, 2), ShownLeftContacts(fixedLead, 8)), Is.EqualTo(0).Within(0.006), "a fixed lead");
+        }
+
+        /// <summary>
+        /// A labelled template walk of the given gain whose labels put every contact <paramref name="early"/> s before the
+        /// step the signal shows (as if its walker's contacts came out that late).
+        /// </summary>
+        static Recording LabelledTemplateWalk(CorrelationTemplate t, double gain, double early, string name)
+        {
+            const double step = 0.55;
+            var map = t.PhaseMap;
+            double leftContact = map.StridePositionOfOnset(Foot.Left, GaitPhase.InitialContact);
+            var samples = new List<RecordedSample>();
+            foreach (var s in TemplateWalk(t, 12, out _, gain, step))
+            {
+                // Contacts at even multiples of the step land the left foot (see TemplateWalk).
+                double stride = leftContact + (s.Time + early) / (2 * step);
+                samples.Add(new RecordedSample(s, map.PhaseAt(Foot.Left, stride, step), map.PhaseAt(Foot.Right, stride, step)));
+            }
+            return new Recording(name, samples);
+        }
+
+        [Test]
+        public void CalibrationLearnsHowMuchLaterABouncierWalkersContactsComeOut()
+        {
+            var t = TestData.Template.With(gate: WalkingGate.Open);
+            const double slope = 0.025;
+            var walks = new List<Recording>();
+            foreach (var gain in new[] { 1.0, 2.0, 4.0, 8.0 })
+                walks.Add(LabelledTemplateWalk(t, gain, slope * Math.Log(gain / 2.8), "gain" + gain));
+            var calibrated = CorrelationClassifier.Calibrate(t, walks);
+            Assert.That(calibrated.LeadPerLogSpan, Is.EqualTo(slope).Within(0.008));
+            var even = new List<Recording>();
+            foreach (var gain in new[] { 1.0, 2.0, 4.0, 8.0 }) even.Add(LabelledTemplateWalk(t, gain, 0, "even" + gain));
+            Assert.That(CorrelationClassifier.Calibrate(t, even).LeadPerLogSpan, Is.EqualTo(0).Within(0.005), "contacts as late for every bounce");
         }
 
         /// <summary>

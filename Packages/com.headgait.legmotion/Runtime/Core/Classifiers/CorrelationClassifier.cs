@@ -118,6 +118,8 @@ namespace HeadGait
         readonly double[] centred;
         int recentCount;
         int stillWindows;
+        double logBounce = double.NaN;    // the walk's bounce: log of SMV's span over its matched steps, smoothed
+        bool walkHasContact;              // whether the walk going on has taken a contact (else the next one sets the bounce)
         double onsetContact = double.NaN; // the contact a walk was started at from the start of the movement; NaN when not
         double onsetMatchedPeriod;        // the step length that start matched (s): where its first contact is searched
 
@@ -222,6 +224,8 @@ namespace HeadGait
             recentCount = 0;
             stillWindows = 0;
             onsetContact = double.NaN;
+            logBounce = double.NaN;
+            walkHasContact = false;
             LastCorrelation = 0;
         }
 
@@ -294,8 +298,12 @@ namespace HeadGait
                 bool peak = r >= (due ? minCorrelation - settings.TrackingMargin : minCorrelation) && recentSpan[centre] >= settings.MinStepSpan;
                 for (int i = 0; peak && i < recentR.Length; i++)
                     if (i != centre && (recentR[i] > r || (recentR[i] == r && i < centre))) peak = false;
+                bool walking = clock.IsWalking(now);
                 if (peak && clock.Contact(contact, recentEvidence[centre]))
+                {
+                    TrackBounce(recentSpan[centre], !walking || !walkHasContact);
                     ContactDetected?.Invoke(contact, recentEvidence[centre], r, t);
+                }
             }
             if (!clock.IsWalking(now) && settings.StartMargin >= 0 && moving) TryStart(window, now, valid);
             return clock.Predict(now, Math.Max(0, best));
@@ -392,9 +400,34 @@ namespace HeadGait
             int older = L / 2;
             bool onset = settings.OnsetSpanRatio > 0 && Span(x, first + older, L - older) >= settings.OnsetSpanRatio * Span(x, first, older);
             clock.Start(contact, leftEvidence, onset ? settings.Clock.InitialStepPeriod : matched);
+            walkHasContact = false;
             onsetContact = onset ? contact : double.NaN;
             onsetMatchedPeriod = matched;
         }
+
+        /// <summary>
+        /// Adds a contact's step span (SMV's highest minus lowest over the matched step) to the walk's bounce (the first
+        /// contact of a walk sets it) and leads the clock by the template's <see cref="CorrelationTemplate.LeadPerLogSpan"/>
+        /// for it, within <see cref="MaxLeadAdjustment"/>.
+        /// </summary>
+        void TrackBounce(double span, bool firstOfWalk)
+        {
+            double log = Math.Log(Math.Max(MinBounce, span));
+            logBounce = firstOfWalk || double.IsNaN(logBounce) ? log : (1 - BounceWeight) * logBounce + BounceWeight * log;
+            walkHasContact = true;
+            double adjustment = template.LeadPerLogSpan * (logBounce - Math.Log(template.LeadReferenceSpan));
+            clock.LeadAdjustment = Math.Max(-MaxLeadAdjustment, Math.Min(MaxLeadAdjustment, adjustment));
+        }
+
+        /// <summary>Weight of each new contact's step span in the walk's bounce (an exponential average of logs).</summary>
+        const double BounceWeight = 0.3;
+        const double MinBounce = 0.1;
+
+        /// <summary>Largest lead (s) the bounce adds or takes away.</summary>
+        public const double MaxLeadAdjustment = 0.1;
+
+        /// <summary>The walk's bounce (m/s^2): SMV's span over its matched steps, a smoothed geometric mean; NaN before a contact.</summary>
+        public double WalkBounce => Math.Exp(logBounce);
 
         /// <summary>Highest minus lowest of <paramref name="count"/> values from <paramref name="first"/>.</summary>
         static double Span(double[] v, int first, int count)
@@ -460,13 +493,15 @@ namespace HeadGait
         /// threshold: the r of correlation peaks that match a true contact (within 0.15 s) and of those that do not give the
         /// threshold that best separates them. Then a replay with that threshold: each template's lag is the median time from
         /// a true contact to the peaks it detected (measured with the threshold in force, since weaker early peaks would
-        /// bias it); a template with fewer than 8 matched peaks takes the median of all.
+        /// bias it); a template with fewer than 8 matched peaks takes the median of all. Last, a replay with those lags: the
+        /// least-squares slope of the contacts' offsets on the log of the walk's bounce (<see cref="WalkBounce"/>) is the
+        /// clock lead's <see cref="CorrelationTemplate.LeadPerLogSpan"/>, the median bounce its reference.
         /// </summary>
         public static CorrelationTemplate Calibrate(CorrelationTemplate template, IReadOnlyList<Recording> recordings, CorrelationSettings settings = null)
         {
             var trueR = new List<double>();
             var falseR = new List<double>();
-            Match(template.With(minCorrelation: -0.99).WithLag(0), recordings, settings, (offset, r, t) =>
+            Match(template.With(minCorrelation: -0.99, leadPerLogSpan: 0).WithLag(0), recordings, settings, (offset, r, t, bounce) =>
             {
                 if (Math.Abs(offset) <= 0.15) trueR.Add(r);
                 else falseR.Add(r);
@@ -487,11 +522,11 @@ namespace HeadGait
                     bestThreshold = th;
                 }
             }
-            var thresholded = template.With(minCorrelation: Math.Round(bestThreshold, 2)).WithLag(0);
+            var thresholded = template.With(minCorrelation: Math.Round(bestThreshold, 2), leadPerLogSpan: 0).WithLag(0);
             var lags = new List<double>[template.Templates.Count];
             for (int k = 0; k < lags.Length; k++) lags[k] = new List<double>();
             var all = new List<double>();
-            Match(thresholded, recordings, settings, (offset, r, t) =>
+            Match(thresholded, recordings, settings, (offset, r, t, bounce) =>
             {
                 if (Math.Abs(offset) > 0.15) return;
                 lags[t].Add(offset);
@@ -502,21 +537,50 @@ namespace HeadGait
             var calibrated = new List<StepTemplate>();
             for (int k = 0; k < lags.Length; k++)
                 calibrated.Add(thresholded.Templates[k].WithLag(Math.Max(-0.45, Math.Min(0.45, lags[k].Count >= 8 ? GaitMetrics.Median(lags[k]) : overall))));
-            return thresholded.With(templates: calibrated);
+            var lagged = thresholded.With(templates: calibrated);
+            // The lead's slope: how much later, on these recordings, contacts come out for a bouncier walk.
+            var logBounces = new List<double>();
+            var offsets = new List<double>();
+            Match(lagged, recordings, settings, (offset, r, t, bounce) =>
+            {
+                if (Math.Abs(offset) > 0.15 || !(bounce > 0)) return;
+                offsets.Add(offset);
+                logBounces.Add(Math.Log(bounce));
+            });
+            if (offsets.Count < 30) return lagged;
+            double mx = 0, my = 0, sxy = 0, sxx = 0;
+            for (int i = 0; i < offsets.Count; i++)
+            {
+                mx += logBounces[i];
+                my += offsets[i];
+            }
+            mx /= offsets.Count;
+            my /= offsets.Count;
+            for (int i = 0; i < offsets.Count; i++)
+            {
+                sxy += (logBounces[i] - mx) * (offsets[i] - my);
+                sxx += (logBounces[i] - mx) * (logBounces[i] - mx);
+            }
+            if (sxx < 1e-9) return lagged;
+            double slope = Math.Max(-CorrelationTemplate.MaxLeadPerLogSpan, Math.Min(CorrelationTemplate.MaxLeadPerLogSpan, sxy / sxx));
+            return lagged.With(leadPerLogSpan: slope, leadReferenceSpan: Math.Exp(GaitMetrics.Median(logBounces)));
         }
 
-        /// <summary>Replays each recording and reports, for every contact the clock takes, its offset from the nearest true contact and its r.</summary>
-        static void Match(CorrelationTemplate probe, IReadOnlyList<Recording> recordings, CorrelationSettings settings, Action<double, double, int> onContact)
+        /// <summary>
+        /// Replays each recording and reports, for every contact the clock takes, its offset from the nearest true contact,
+        /// its r, its template and the walk's bounce with it.
+        /// </summary>
+        static void Match(CorrelationTemplate probe, IReadOnlyList<Recording> recordings, CorrelationSettings settings, Action<double, double, int, double> onContact)
         {
             foreach (var rec in recordings)
             {
                 var cor = new CorrelationClassifier(probe, settings);
-                var detections = new List<(double time, double r, int template)>();
+                var detections = new List<(double time, double r, int template, double bounce)>();
                 var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
-                cor.ContactDetected += (t, e, r, k) => detections.Add((t, r, k));
+                cor.ContactDetected += (t, e, r, k) => detections.Add((t, r, k, cor.WalkBounce));
                 foreach (var s in rec.Samples) pre.Push(s.Imu, w => cor.Classify(w));
                 var contacts = PhaseEvents.TruthContacts(rec);
-                foreach (var d in detections) onContact(PhaseEvents.OffsetFromNearest(contacts, d.time), d.r, d.template);
+                foreach (var d in detections) onContact(PhaseEvents.OffsetFromNearest(contacts, d.time), d.r, d.template, d.bounce);
             }
         }
     }

@@ -103,6 +103,7 @@ namespace HeadGait
             lastFoot = Foot.Left;
             reported = double.NaN;
             stance.Reset();
+            LeadAdjustment = 0;
         }
 
         /// <summary>
@@ -162,7 +163,13 @@ namespace HeadGait
 
         /// <summary>Stride position now: the last contact's foot landing, advanced at the step period.</summary>
         public double StridePosition(double now)
-            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now + settings.Lead - lastContact) / (2 * period);
+            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now + settings.Lead + LeadAdjustment - lastContact) / (2 * period);
+
+        /// <summary>
+        /// Seconds added to <see cref="StepClockSettings.Lead"/> for the walker at hand (set by the detector; 0 after
+        /// <see cref="Reset"/>): how late contacts come out differs between walkers.
+        /// </summary>
+        public double LeadAdjustment { get; set; }
 
         /// <summary>The prediction now; a walking stride position never steps back by less than <see cref="StepClockSettings.HoldBack"/>.</summary>
         public GaitPrediction Predict(double now, double confidence)
