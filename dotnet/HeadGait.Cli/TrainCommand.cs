@@ -62,7 +62,7 @@ namespace HeadGait.Cli
                     thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
                     Console.WriteLine("walking gates: log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g, SMV's autocorrelation half a step (0.25 s) apart over 1 s, then their pairwise products; bias");
                     Console.WriteLine($"THR's walking gate (also fitted on {GaitTraining.CalmGateCopies} calm-swaying copies of each recording; {100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Threshold.Serialize()}");
-                    Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms");
+                    Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms, {1000 * thr.Clock.LeadPerLogBounce:+0.0;-0.0} ms per log unit of bounce from {thr.Clock.LeadReferenceBounce:F1} m/s^2");
                     Console.WriteLine($"COR's walking gate ({100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Correlation.Serialize()}");
                     var cor = GaitTraining.TrainCorrelation(training, map, gates.Correlation);
                     cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));

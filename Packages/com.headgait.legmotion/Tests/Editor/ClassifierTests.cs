@@ -454,6 +454,44 @@ namespace HeadGait.Tests
 
     public class StepClockTests
     {
+        [Test]
+        public void ABouncierWalkerLeadsTheStridePositionByTheSlopeWithinItsLimit()
+        {
+            var clock = new StepClock(PhaseMap.Perry, new StepClockSettings { ContactsToStart = 1, LeadPerLogBounce = 0.02, LeadReferenceBounce = 4 });
+            clock.Contact(0, 1);
+            double level = clock.StridePosition(0.2);
+            clock.FollowBounce(16);
+            Assert.That(clock.BounceLead, Is.EqualTo(0.02 * Math.Log(4)).Within(1e-12));
+            Assert.That(clock.StridePosition(0.2) - level, Is.EqualTo(0.02 * Math.Log(4) / (2 * clock.StepPeriod)).Within(1e-12));
+            clock.FollowBounce(double.NaN);
+            Assert.That(clock.BounceLead, Is.EqualTo(0.02 * Math.Log(4)).Within(1e-12), "no bounce measured: the lead stays");
+            clock.FollowBounce(1e30);
+            Assert.That(clock.BounceLead, Is.EqualTo(StepClockSettings.MaxBounceLead));
+            clock.Reset();
+            Assert.That(clock.BounceLead, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void FittingTheBounceLeadRecoversAPlantedSlopeAndNeedsEnoughVariedContacts()
+        {
+            var random = new HeadGait.Synthetic.DeterministicRandom(5);
+            var offsets = new List<double>();
+            var bounces = new List<double>();
+            for (int i = 0; i < 400; i++)
+            {
+                double bounce = 1 + 9 * random.NextDouble();
+                bounces.Add(bounce);
+                offsets.Add(0.01 + 0.025 * Math.Log(bounce) + 0.02 * random.NextGaussian());
+            }
+            Assert.That(StepClock.FitBounceLead(offsets, bounces, out double slope, out double reference), Is.True);
+            Assert.That(slope, Is.EqualTo(0.025).Within(0.005));
+            Assert.That(reference, Is.InRange(4.0, 7.0), "the median bounce");
+            Assert.That(StepClock.FitBounceLead(offsets.GetRange(0, 20), bounces.GetRange(0, 20), out _, out _), Is.False, "too few contacts");
+            var same = new List<double>();
+            foreach (var _ in offsets) same.Add(3);
+            Assert.That(StepClock.FitBounceLead(offsets, same, out _, out _), Is.False, "every bounce alike");
+        }
+
         /// <summary>
         /// Steps of 0.55 s, then a slower one of 0.7 s confirmed 20 ms late: the clock ran on at the old period, so the
         /// right foot had already left the ground when the left contact dated the stride back. Predicted every 10 ms.
@@ -598,6 +636,8 @@ namespace HeadGait.Tests
             // Contacts are dated at SMV rising through 1 g, an absolute level: a sensor reading 3 % high or low shifts SMV - g
             // by about 0.3 m/s^2. The committed THR (trained on people) on the generated walker, scaled both ways.
             var thr = TestData.CommittedThreshold;
+            // The clock's lead for the walker's bounce follows the scale on purpose (3 % of a 4 m/s^2 peak: 2 ms); the dating alone here.
+            thr.Clock.LeadPerLogBounce = 0;
             var rec = TestData.Eval("walk_straight");
             Recording Scaled(double k)
             {
@@ -667,6 +707,36 @@ namespace HeadGait.Tests
             Assert.That(back.Gate.Serialize(), Is.EqualTo(s.Gate.Serialize()));
             Assert.That(() => ThresholdSettings.Parse(s.Serialize().Replace("floor=", "floor=Infinity\nx="), "thr.txt"),
                 Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains("floor"));
+            var bouncy = s.Clone();
+            bouncy.Clock.LeadPerLogBounce = 0.03;
+            bouncy.Clock.LeadReferenceBounce = 4.5;
+            var bouncyBack = ThresholdSettings.Parse(bouncy.Serialize());
+            Assert.That(bouncyBack.Clock.LeadPerLogBounce, Is.EqualTo(0.03));
+            Assert.That(bouncyBack.Clock.LeadReferenceBounce, Is.EqualTo(4.5));
+            Assert.That(() => ThresholdSettings.Parse(bouncy.Serialize().Replace("clock_lead_per_log_bounce=", "clock_lead_per_log_bounce=-1\nx="), "thr.txt"),
+                Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_per_log_bounce"));
+            // Written before the lead followed the bounce: a fixed lead.
+            string old = System.Text.RegularExpressions.Regex.Replace(bouncy.Serialize(), "clock_lead_(per_log|reference)_bounce=[^\n]*\n", "");
+            Assert.That(old, Does.Not.Contain("_bounce"));
+            Assert.That(ThresholdSettings.Parse(old).Clock.LeadPerLogBounce, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void TheClockIsLedForTheWalkersStepPeaks()
+        {
+            var settings = TestData.Threshold.Clone();
+            settings.Clock.LeadPerLogBounce = 0.03;
+            settings.Clock.LeadReferenceBounce = 1;
+            var thr = new ThresholdClassifier(settings);
+            double lastBounce = double.NaN, leadThen = double.NaN;
+            thr.ContactDetected += (t, e) =>
+            {
+                lastBounce = thr.WalkBounce;
+                leadThen = thr.Clock.BounceLead;
+            };
+            ReplayEvaluator.Run(TestData.Eval("walk_straight"), thr);
+            Assert.That(lastBounce, Is.GreaterThan(1));
+            Assert.That(leadThen, Is.EqualTo(Math.Min(StepClockSettings.MaxBounceLead, 0.03 * Math.Log(lastBounce))).Within(1e-12));
         }
 
         [Test]

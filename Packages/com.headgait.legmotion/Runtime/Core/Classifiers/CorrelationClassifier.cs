@@ -137,6 +137,8 @@ namespace HeadGait
             minCorrelation = double.IsNaN(s.MinCorrelationOverride) ? template.MinCorrelation : s.MinCorrelationOverride;
             var clockSettings = s.Clock.Clone();
             clockSettings.Lead = template.ClockLead;
+            clockSettings.LeadPerLogBounce = template.LeadPerLogSpan;
+            clockSettings.LeadReferenceBounce = template.LeadReferenceSpan;
             clock = new StepClock(template.PhaseMap, clockSettings);
             periods = s.MaxStepSamples - s.MinStepSamples + 1;
             startPeriods = Math.Min(periods, s.StartMaxStepSamples - s.MinStepSamples + 1);
@@ -407,24 +409,20 @@ namespace HeadGait
 
         /// <summary>
         /// Adds a contact's step span (SMV's highest minus lowest over the matched step) to the walk's bounce (the first
-        /// contact of a walk sets it) and leads the clock by the template's <see cref="CorrelationTemplate.LeadPerLogSpan"/>
-        /// for it, within <see cref="MaxLeadAdjustment"/>.
+        /// contact of a walk sets it) and leads the clock for it (<see cref="StepClock.FollowBounce"/>, at the template's
+        /// <see cref="CorrelationTemplate.LeadPerLogSpan"/>).
         /// </summary>
         void TrackBounce(double span, bool firstOfWalk)
         {
             double log = Math.Log(Math.Max(MinBounce, span));
             logBounce = firstOfWalk || double.IsNaN(logBounce) ? log : (1 - BounceWeight) * logBounce + BounceWeight * log;
             walkHasContact = true;
-            double adjustment = template.LeadPerLogSpan * (logBounce - Math.Log(template.LeadReferenceSpan));
-            clock.LeadAdjustment = Math.Max(-MaxLeadAdjustment, Math.Min(MaxLeadAdjustment, adjustment));
+            clock.FollowBounce(WalkBounce);
         }
 
         /// <summary>Weight of each new contact's step span in the walk's bounce (an exponential average of logs).</summary>
         const double BounceWeight = 0.3;
         const double MinBounce = 0.1;
-
-        /// <summary>Largest lead (s) the bounce adds or takes away.</summary>
-        public const double MaxLeadAdjustment = 0.1;
 
         /// <summary>The walk's bounce (m/s^2): SMV's span over its matched steps, a smoothed geometric mean; NaN before a contact.</summary>
         public double WalkBounce => Math.Exp(logBounce);
@@ -539,31 +537,17 @@ namespace HeadGait
                 calibrated.Add(thresholded.Templates[k].WithLag(Math.Max(-0.45, Math.Min(0.45, lags[k].Count >= 8 ? GaitMetrics.Median(lags[k]) : overall))));
             var lagged = thresholded.With(templates: calibrated);
             // The lead's slope: how much later, on these recordings, contacts come out for a bouncier walk.
-            var logBounces = new List<double>();
+            var bounces = new List<double>();
             var offsets = new List<double>();
             Match(lagged, recordings, settings, (offset, r, t, bounce) =>
             {
-                if (Math.Abs(offset) > 0.15 || !(bounce > 0)) return;
+                if (Math.Abs(offset) > 0.15) return;
                 offsets.Add(offset);
-                logBounces.Add(Math.Log(bounce));
+                bounces.Add(bounce);
             });
-            if (offsets.Count < 30) return lagged;
-            double mx = 0, my = 0, sxy = 0, sxx = 0;
-            for (int i = 0; i < offsets.Count; i++)
-            {
-                mx += logBounces[i];
-                my += offsets[i];
-            }
-            mx /= offsets.Count;
-            my /= offsets.Count;
-            for (int i = 0; i < offsets.Count; i++)
-            {
-                sxy += (logBounces[i] - mx) * (offsets[i] - my);
-                sxx += (logBounces[i] - mx) * (logBounces[i] - mx);
-            }
-            if (sxx < 1e-9) return lagged;
-            double slope = Math.Max(-CorrelationTemplate.MaxLeadPerLogSpan, Math.Min(CorrelationTemplate.MaxLeadPerLogSpan, sxy / sxx));
-            return lagged.With(leadPerLogSpan: slope, leadReferenceSpan: Math.Exp(GaitMetrics.Median(logBounces)));
+            return StepClock.FitBounceLead(offsets, bounces, out double slope, out double reference)
+                ? lagged.With(leadPerLogSpan: slope, leadReferenceSpan: reference)
+                : lagged;
         }
 
         /// <summary>

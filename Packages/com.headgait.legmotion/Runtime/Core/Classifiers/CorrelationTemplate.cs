@@ -64,7 +64,7 @@ namespace HeadGait
             if (templates == null || templates.Count < 1 || templates.Count > 16) throw new ArgumentException("COR needs 1 to 16 step templates.");
             if (!(minCorrelation > -1 && minCorrelation < 1)) throw new ArgumentException("The minimum correlation must lie in (-1, 1).");
             if (!(Math.Abs(clockLead) < 0.5)) throw new ArgumentException("The clock lead must lie within 0.5 s.");
-            if (!(Math.Abs(leadPerLogSpan) <= MaxLeadPerLogSpan)) throw new ArgumentException($"The clock lead per log span must lie within {MaxLeadPerLogSpan} s.");
+            if (!(Math.Abs(leadPerLogSpan) <= StepClockSettings.MaxLeadPerLogBounce)) throw new ArgumentException($"The clock lead per log span must lie within {StepClockSettings.MaxLeadPerLogBounce} s.");
             if (!(leadReferenceSpan > 0 && leadReferenceSpan < 1000)) throw new ArgumentException("The clock lead's reference span must lie in (0, 1000) m/s^2.");
             Templates = new List<StepTemplate>(templates).AsReadOnly();
             PhaseMap = phaseMap ?? throw new ArgumentNullException(nameof(phaseMap));
@@ -75,8 +75,6 @@ namespace HeadGait
             LeadReferenceSpan = leadReferenceSpan;
         }
 
-        /// <summary>Largest <see cref="LeadPerLogSpan"/> accepted (s per unit of natural log).</summary>
-        public const double MaxLeadPerLogSpan = 0.1;
 
         public IReadOnlyList<StepTemplate> Templates { get; }
         public PhaseMap PhaseMap { get; }
@@ -322,7 +320,7 @@ namespace HeadGait
             double minR = kv.Number("min_correlation", -0.999, 0.999);
             var gate = kv.Gate("walking_gate");
             double lead = kv.Number("clock_lead", -0.49, 0.49, 0);
-            double leadPerLogSpan = kv.Number("clock_lead_per_log_span", -MaxLeadPerLogSpan, MaxLeadPerLogSpan, 0);
+            double leadPerLogSpan = kv.Number("clock_lead_per_log_span", -StepClockSettings.MaxLeadPerLogBounce, StepClockSettings.MaxLeadPerLogBounce, 0);
             double leadReferenceSpan = kv.Number("clock_lead_reference_span", 1e-6, 999, DefaultLeadReferenceSpan);
             int count = (int)kv.Number("templates", 1, 16);
             var templates = new List<StepTemplate>();

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace HeadGait
 {
@@ -46,6 +47,20 @@ namespace HeadGait
         /// phase changes between contacts come out late on average; the trainer measures by how much and sets this.
         /// </summary>
         public double Lead = 0;
+
+        /// <summary>
+        /// Seconds of lead added per unit of the natural log of the walker's bounce above <see cref="LeadReferenceBounce"/>
+        /// (the detector says what its bounce is: COR the span of SMV over its matched steps, THR its recent step peaks;
+        /// <see cref="StepClock.FollowBounce"/>). A bouncier walker's contacts come out later: held-out, the bouncy *bn act*
+        /// walkers' 25 ms late, the calm *bn fem* and *bn mas* 20 and 38 ms early. Learned (<see cref="StepClock.FitBounceLead"/>); 0 keeps the lead fixed.
+        /// </summary>
+        public double LeadPerLogBounce = 0;
+
+        /// <summary>The bounce at which the lead is <see cref="Lead"/> (m/s^2; the training contacts' median).</summary>
+        public double LeadReferenceBounce = 5;
+
+        /// <summary>Largest <see cref="LeadPerLogBounce"/> accepted (s), and the most the bounce adds to or takes from the lead.</summary>
+        public const double MaxLeadPerLogBounce = 0.1, MaxBounceLead = 0.1;
 
         /// <summary>
         /// Largest step back (share of a stride) the reported stride position does not take: it holds until the clock
@@ -103,7 +118,7 @@ namespace HeadGait
             lastFoot = Foot.Left;
             reported = double.NaN;
             stance.Reset();
-            LeadAdjustment = 0;
+            BounceLead = 0;
         }
 
         /// <summary>
@@ -163,13 +178,56 @@ namespace HeadGait
 
         /// <summary>Stride position now: the last contact's foot landing, advanced at the step period.</summary>
         public double StridePosition(double now)
-            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now + settings.Lead + LeadAdjustment - lastContact) / (2 * period);
+            => map.StridePositionOfOnset(lastFoot, GaitPhase.InitialContact) + (now + settings.Lead + BounceLead - lastContact) / (2 * period);
+
+        /// <summary>Seconds the walker's bounce adds to <see cref="StepClockSettings.Lead"/> (0 until <see cref="FollowBounce"/>, and after <see cref="Reset"/>).</summary>
+        public double BounceLead { get; private set; }
+
+        /// <summary>The walker now bounces <paramref name="bounce"/> (m/s^2, as the detector measures it): lead the clock for it.</summary>
+        public void FollowBounce(double bounce)
+        {
+            if (!(bounce > 0) || double.IsInfinity(bounce)) return;
+            double lead = settings.LeadPerLogBounce * (Math.Log(bounce) - Math.Log(settings.LeadReferenceBounce));
+            BounceLead = Math.Max(-StepClockSettings.MaxBounceLead, Math.Min(StepClockSettings.MaxBounceLead, lead));
+        }
 
         /// <summary>
-        /// Seconds added to <see cref="StepClockSettings.Lead"/> for the walker at hand (set by the detector; 0 after
-        /// <see cref="Reset"/>): how late contacts come out differs between walkers.
+        /// The <see cref="StepClockSettings.LeadPerLogBounce"/> and reference that fit contacts' offsets from the true ones
+        /// (s, positive late) against the walker's bounce at each: the least-squares slope on the log of the bounce (within
+        /// <see cref="StepClockSettings.MaxLeadPerLogBounce"/>) and the median bounce. False with under 30 usable contacts
+        /// or bounces all alike.
         /// </summary>
-        public double LeadAdjustment { get; set; }
+        public static bool FitBounceLead(IReadOnlyList<double> offsets, IReadOnlyList<double> bounces, out double perLogBounce, out double reference)
+        {
+            perLogBounce = 0;
+            reference = 5;
+            var x = new List<double>();
+            var y = new List<double>();
+            for (int i = 0; i < offsets.Count && i < bounces.Count; i++)
+            {
+                if (!(bounces[i] > 0) || double.IsInfinity(bounces[i]) || !ImuSample.IsFiniteNumber(offsets[i])) continue;
+                x.Add(Math.Log(bounces[i]));
+                y.Add(offsets[i]);
+            }
+            if (x.Count < 30) return false;
+            double mx = 0, my = 0, sxy = 0, sxx = 0;
+            for (int i = 0; i < x.Count; i++)
+            {
+                mx += x[i];
+                my += y[i];
+            }
+            mx /= x.Count;
+            my /= x.Count;
+            for (int i = 0; i < x.Count; i++)
+            {
+                sxy += (x[i] - mx) * (y[i] - my);
+                sxx += (x[i] - mx) * (x[i] - mx);
+            }
+            if (sxx < 1e-9) return false;
+            perLogBounce = Math.Max(-StepClockSettings.MaxLeadPerLogBounce, Math.Min(StepClockSettings.MaxLeadPerLogBounce, sxy / sxx));
+            reference = Math.Exp(GaitMetrics.Median(x));
+            return true;
+        }
 
         /// <summary>The prediction now; a walking stride position never steps back by less than <see cref="StepClockSettings.HoldBack"/>.</summary>
         public GaitPrediction Predict(double now, double confidence)

@@ -103,6 +103,8 @@ namespace HeadGait
                 new KeyValuePair<string, string>("lateral_profile", Join(LateralProfile)),
                 new KeyValuePair<string, string>("contacts_to_start", Clock.ContactsToStart.ToString(ci)),
                 new KeyValuePair<string, string>("clock_lead", Clock.Lead.ToString("R", ci)),
+                new KeyValuePair<string, string>("clock_lead_per_log_bounce", Clock.LeadPerLogBounce.ToString("R", ci)),
+                new KeyValuePair<string, string>("clock_lead_reference_bounce", Clock.LeadReferenceBounce.ToString("R", ci)),
                 new KeyValuePair<string, string>("walking_gate", Gate.Serialize()),
             });
         }
@@ -133,6 +135,8 @@ namespace HeadGait
             };
             s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
             s.Clock.Lead = kv.Number("clock_lead", -0.49, 0.49, 0);
+            s.Clock.LeadPerLogBounce = kv.Number("clock_lead_per_log_bounce", -StepClockSettings.MaxLeadPerLogBounce, StepClockSettings.MaxLeadPerLogBounce, 0);
+            s.Clock.LeadReferenceBounce = kv.Number("clock_lead_reference_bounce", 1e-6, 999, s.Clock.LeadReferenceBounce);
             if (kv.Has("walking_gate")) s.Gate = kv.Gate("walking_gate");
             return s;
         }
@@ -169,6 +173,9 @@ namespace HeadGait
         public PhaseMap PhaseMap => settings.PhaseMap;
         public ThresholdSettings Settings => settings;
         public StepClock Clock => clock;
+
+        /// <summary>The walker's bounce: its recent step peaks (SMV minus gravity, m/s^2, smoothed); NaN before a step.</summary>
+        public double WalkBounce => peakLevel > 0 ? peakLevel : double.NaN;
 
         /// <summary>Threshold in force after the last window (diagnostics).</summary>
         public double Threshold => Math.Max(settings.Floor, settings.PeakFraction * peakLevel);
@@ -226,6 +233,7 @@ namespace HeadGait
                 double time = now - ago / window.SampleRate - settings.ContactLag;
                 if (clock.Contact(time, evidence))
                 {
+                    clock.FollowBounce(WalkBounce);
                     inStep = true;
                     currentPeak = smv;
                     ContactDetected?.Invoke(time, evidence);
@@ -297,7 +305,8 @@ namespace HeadGait
         /// <summary>
         /// Learns THR from labelled recordings: the floor from the quietest steps' peaks, the detection lag (median time
         /// from a true contact to the moment its detection is dated) and the mean sideways acceleration up to a left
-        /// contact's detection (right contacts mirrored in).
+        /// contact's detection (right contacts mirrored in); then how much later a bouncier walker's contacts come out
+        /// (<see cref="StepClockSettings.LeadPerLogBounce"/>, against its recent step peaks, <see cref="WalkBounce"/>).
         /// </summary>
         public static ThresholdSettings Calibrate(IEnumerable<Recording> training, PhaseMap map, WalkingGate gate, ThresholdSettings start = null)
         {
@@ -366,6 +375,30 @@ namespace HeadGait
             {
                 for (int i = 0; i < profile.Length; i++) profile[i] /= used;
                 s.LateralProfile = profile;
+            }
+            // Last, with the lag and profile in force: how much later a bouncier walker's contacts come out.
+            var offsets = new List<double>();
+            var bounces = new List<double>();
+            var fitted = s.Clone();
+            fitted.Clock.LeadPerLogBounce = 0;
+            foreach (var rec in list)
+            {
+                var thr = new ThresholdClassifier(fitted);
+                var contacts = PhaseEvents.TruthContacts(rec);
+                thr.ContactDetected += (t, e) =>
+                {
+                    double offset = PhaseEvents.OffsetFromNearest(contacts, t);
+                    if (Math.Abs(offset) > 0.15) return;
+                    offsets.Add(offset);
+                    bounces.Add(thr.WalkBounce);
+                };
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+                foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
+            }
+            if (StepClock.FitBounceLead(offsets, bounces, out double perLogBounce, out double reference))
+            {
+                s.Clock.LeadPerLogBounce = perLogBounce;
+                s.Clock.LeadReferenceBounce = reference;
             }
             return s;
         }
