@@ -66,7 +66,7 @@ namespace HeadGait.Cli
                     Console.WriteLine($"COR's walking gate ({100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Correlation.Serialize()}");
                     var cor = GaitTraining.TrainCorrelation(training, map, gates.Correlation);
                     cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
-                    Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms, {1000 * cor.LeadPerLogSpan:+0.0;-0.0} ms per log unit of bounce from {cor.LeadReferenceSpan:F1} m/s^2");
+                    Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms, {1000 * cor.LeadPerLogBounce:+0.0;-0.0} ms per log unit of bounce from {cor.LeadReferenceBounce:F1} m/s^2");
                 }
 
                 string kinds = parse.GetValue(learned);

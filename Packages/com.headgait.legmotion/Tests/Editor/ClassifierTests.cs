@@ -42,10 +42,10 @@ namespace HeadGait.Tests
             }
             Assert.That(back.MinCorrelation, Is.EqualTo(t.MinCorrelation));
             Assert.That(back.ClockLead, Is.EqualTo(t.ClockLead));
-            var bouncy = t.With(leadPerLogSpan: 0.02, leadReferenceSpan: 7.5);
+            var bouncy = t.With(leadPerLogBounce: 0.02, leadReferenceBounce: 7.5);
             var bouncyBack = CorrelationTemplate.Parse(bouncy.Serialize());
-            Assert.That(bouncyBack.LeadPerLogSpan, Is.EqualTo(0.02));
-            Assert.That(bouncyBack.LeadReferenceSpan, Is.EqualTo(7.5));
+            Assert.That(bouncyBack.LeadPerLogBounce, Is.EqualTo(0.02));
+            Assert.That(bouncyBack.LeadReferenceBounce, Is.EqualTo(7.5));
             Assert.That(back.Gate.Serialize(), Is.EqualTo(t.Gate.Serialize()));
             Assert.That(back.PhaseMap.Serialize(), Is.EqualTo(t.PhaseMap.Serialize()));
         }
@@ -61,8 +61,8 @@ namespace HeadGait.Tests
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("templates=", "templates=9\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("lacks 'step_smv."));
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("templates=", "templates=0\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("'templates'"));
             Assert.That(() => CorrelationTemplate.Parse(good.Replace("min_correlation=", "min_correlation=1e309\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("min_correlation"));
-            Assert.That(() => CorrelationTemplate.Parse(good.Replace("clock_lead_per_log_span=", "clock_lead_per_log_span=0.5\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_per_log_span"));
-            Assert.That(() => CorrelationTemplate.Parse(good.Replace("clock_lead_reference_span=", "clock_lead_reference_span=0\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_reference_span"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("clock_lead_per_log_bounce=", "clock_lead_per_log_bounce=0.5\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_per_log_bounce"));
+            Assert.That(() => CorrelationTemplate.Parse(good.Replace("clock_lead_reference_bounce=", "clock_lead_reference_bounce=0\nx=")), Throws.TypeOf<FormatException>().With.Message.Contains("clock_lead_reference_bounce"));
             string constant = "step_smv.0=" + string.Join(",", new string('1', CorrelationTemplate.StepPoints).ToCharArray());
             string withConstant = System.Text.RegularExpressions.Regex.Replace(good, "step_smv\\.0=[^\n]*", constant);
             Assert.That(() => CorrelationTemplate.Parse(withConstant), Throws.TypeOf<FormatException>().With.Message.Contains("constant"));
@@ -72,12 +72,12 @@ namespace HeadGait.Tests
         public void ATemplateWithoutTheBounceLeadKeepsAFixedLead()
         {
             // Templates written before the lead followed the walker's bounce read as a fixed lead.
-            string good = TestData.Template.With(leadPerLogSpan: 0.02).Serialize();
-            string old = System.Text.RegularExpressions.Regex.Replace(good, "clock_lead_(per_log_span|reference_span)=[^\n]*\n", "");
-            Assert.That(old, Does.Not.Contain("per_log_span"));
+            string good = TestData.Template.With(leadPerLogBounce: 0.02).Serialize();
+            string old = System.Text.RegularExpressions.Regex.Replace(good, "clock_lead_(per_log|reference)_bounce=[^\n]*\n", "");
+            Assert.That(old, Does.Not.Contain("_bounce"));
             var t = CorrelationTemplate.Parse(old);
-            Assert.That(t.LeadPerLogSpan, Is.EqualTo(0));
-            Assert.That(t.LeadReferenceSpan, Is.EqualTo(CorrelationTemplate.DefaultLeadReferenceSpan));
+            Assert.That(t.LeadPerLogBounce, Is.EqualTo(0));
+            Assert.That(t.LeadReferenceBounce, Is.EqualTo(StepClockSettings.DefaultLeadReferenceBounce));
         }
 
         [Test]
@@ -240,7 +240,7 @@ namespace HeadGait.Tests
         {
             // The same steps at 4 times the bounce: with 0.03 s per log unit the clock runs 0.03 * ln 4 = 42 ms further ahead.
             var fixedLead = OpenTemplate;
-            var following = OpenTemplate.With(leadPerLogSpan: 0.03);
+            var following = OpenTemplate.With(leadPerLogBounce: 0.03);
             double shift = MeanShift(ShownLeftContacts(following, 2), ShownLeftContacts(following, 8));
             Assert.That(shift, Is.EqualTo(-0.03 * Math.Log(4)).Within(0.012));
             Assert.That(MeanShift(ShownLeftContacts(fixedLead, 2), ShownLeftContacts(fixedLead, 8)), Is.EqualTo(0).Within(0.006), "a fixed lead");
@@ -274,10 +274,10 @@ namespace HeadGait.Tests
             foreach (var gain in new[] { 1.0, 2.0, 4.0, 8.0 })
                 walks.Add(LabelledTemplateWalk(t, gain, slope * Math.Log(gain / 2.8), "gain" + gain));
             var calibrated = CorrelationClassifier.Calibrate(t, walks);
-            Assert.That(calibrated.LeadPerLogSpan, Is.EqualTo(slope).Within(0.008));
+            Assert.That(calibrated.LeadPerLogBounce, Is.EqualTo(slope).Within(0.008));
             var even = new List<Recording>();
             foreach (var gain in new[] { 1.0, 2.0, 4.0, 8.0 }) even.Add(LabelledTemplateWalk(t, gain, 0, "even" + gain));
-            Assert.That(CorrelationClassifier.Calibrate(t, even).LeadPerLogSpan, Is.EqualTo(0).Within(0.005), "contacts as late for every bounce");
+            Assert.That(CorrelationClassifier.Calibrate(t, even).LeadPerLogBounce, Is.EqualTo(0).Within(0.005), "contacts as late for every bounce");
         }
 
         /// <summary>

@@ -55,24 +55,21 @@ namespace HeadGait
         /// <summary>Mean steps learned by default.</summary>
         public const int DefaultTemplateCount = 3;
 
-        /// <summary>Bounce at which <see cref="LeadPerLogSpan"/> adds nothing when none is given (m/s^2).</summary>
-        public const double DefaultLeadReferenceSpan = 5;
-
         public CorrelationTemplate(IReadOnlyList<StepTemplate> templates, PhaseMap phaseMap, double minCorrelation, WalkingGate gate, double clockLead = 0,
-            double leadPerLogSpan = 0, double leadReferenceSpan = DefaultLeadReferenceSpan)
+            double leadPerLogBounce = 0, double leadReferenceBounce = StepClockSettings.DefaultLeadReferenceBounce)
         {
             if (templates == null || templates.Count < 1 || templates.Count > 16) throw new ArgumentException("COR needs 1 to 16 step templates.");
             if (!(minCorrelation > -1 && minCorrelation < 1)) throw new ArgumentException("The minimum correlation must lie in (-1, 1).");
             if (!(Math.Abs(clockLead) < 0.5)) throw new ArgumentException("The clock lead must lie within 0.5 s.");
-            if (!(Math.Abs(leadPerLogSpan) <= StepClockSettings.MaxLeadPerLogBounce)) throw new ArgumentException($"The clock lead per log span must lie within {StepClockSettings.MaxLeadPerLogBounce} s.");
-            if (!(leadReferenceSpan > 0 && leadReferenceSpan < 1000)) throw new ArgumentException("The clock lead's reference span must lie in (0, 1000) m/s^2.");
+            if (!(Math.Abs(leadPerLogBounce) <= StepClockSettings.MaxLeadPerLogBounce)) throw new ArgumentException($"The clock lead per log bounce must lie within {StepClockSettings.MaxLeadPerLogBounce} s.");
+            if (!(leadReferenceBounce > 0 && leadReferenceBounce < 1000)) throw new ArgumentException("The clock lead's reference bounce must lie in (0, 1000) m/s^2.");
             Templates = new List<StepTemplate>(templates).AsReadOnly();
             PhaseMap = phaseMap ?? throw new ArgumentNullException(nameof(phaseMap));
             MinCorrelation = minCorrelation;
             Gate = gate ?? WalkingGate.Open;
             ClockLead = clockLead;
-            LeadPerLogSpan = leadPerLogSpan;
-            LeadReferenceSpan = leadReferenceSpan;
+            LeadPerLogBounce = leadPerLogBounce;
+            LeadReferenceBounce = leadReferenceBounce;
         }
 
 
@@ -84,14 +81,14 @@ namespace HeadGait
         public double ClockLead { get; }
 
         /// <summary>
-        /// Seconds of clock lead added per unit of the natural log of the walker's bounce (SMV's span over its matched
-        /// steps) above <see cref="LeadReferenceSpan"/>: a bouncier walker's contacts come out later. Learned by
-        /// <see cref="CorrelationClassifier.Calibrate"/>; 0 keeps the lead fixed.
+        /// Seconds of clock lead added per unit of the natural log of the walker's bounce (SMV's peak over its matched
+        /// steps, <see cref="CorrelationClassifier.WalkBounce"/>) above <see cref="LeadReferenceBounce"/>: a bouncier
+        /// walker's contacts come out later. Learned by <see cref="CorrelationClassifier.Calibrate"/>; 0 keeps the lead fixed.
         /// </summary>
-        public double LeadPerLogSpan { get; }
+        public double LeadPerLogBounce { get; }
 
-        /// <summary>The bounce (m/s^2) at which the lead is <see cref="ClockLead"/>: the training steps' median.</summary>
-        public double LeadReferenceSpan { get; }
+        /// <summary>The bounce (m/s^2) at which the lead is <see cref="ClockLead"/>: the training contacts' median.</summary>
+        public double LeadReferenceBounce { get; }
 
         public int StepsUsed
         {
@@ -104,9 +101,9 @@ namespace HeadGait
         }
 
         public CorrelationTemplate With(double? minCorrelation = null, WalkingGate gate = null, double? clockLead = null, IReadOnlyList<StepTemplate> templates = null,
-            double? leadPerLogSpan = null, double? leadReferenceSpan = null)
+            double? leadPerLogBounce = null, double? leadReferenceBounce = null)
             => new CorrelationTemplate(templates ?? Templates, PhaseMap, minCorrelation ?? MinCorrelation, gate ?? Gate, clockLead ?? ClockLead,
-                leadPerLogSpan ?? LeadPerLogSpan, leadReferenceSpan ?? LeadReferenceSpan);
+                leadPerLogBounce ?? LeadPerLogBounce, leadReferenceBounce ?? LeadReferenceBounce);
 
         /// <summary>The same templates with every contact lag set to <paramref name="lag"/>.</summary>
         public CorrelationTemplate WithLag(double lag)
@@ -293,8 +290,8 @@ namespace HeadGait
                 new KeyValuePair<string, string>("min_correlation", MinCorrelation.ToString("R", ci)),
                 new KeyValuePair<string, string>("walking_gate", Gate.Serialize()),
                 new KeyValuePair<string, string>("clock_lead", ClockLead.ToString("R", ci)),
-                new KeyValuePair<string, string>("clock_lead_per_log_span", LeadPerLogSpan.ToString("R", ci)),
-                new KeyValuePair<string, string>("clock_lead_reference_span", LeadReferenceSpan.ToString("R", ci)),
+                new KeyValuePair<string, string>("clock_lead_per_log_bounce", LeadPerLogBounce.ToString("R", ci)),
+                new KeyValuePair<string, string>("clock_lead_reference_bounce", LeadReferenceBounce.ToString("R", ci)),
                 new KeyValuePair<string, string>("templates", Templates.Count.ToString(ci)),
             };
             for (int k = 0; k < Templates.Count; k++)
@@ -320,8 +317,8 @@ namespace HeadGait
             double minR = kv.Number("min_correlation", -0.999, 0.999);
             var gate = kv.Gate("walking_gate");
             double lead = kv.Number("clock_lead", -0.49, 0.49, 0);
-            double leadPerLogSpan = kv.Number("clock_lead_per_log_span", -StepClockSettings.MaxLeadPerLogBounce, StepClockSettings.MaxLeadPerLogBounce, 0);
-            double leadReferenceSpan = kv.Number("clock_lead_reference_span", 1e-6, 999, DefaultLeadReferenceSpan);
+            double leadPerLogBounce = kv.Number("clock_lead_per_log_bounce", -StepClockSettings.MaxLeadPerLogBounce, StepClockSettings.MaxLeadPerLogBounce, 0);
+            double leadReferenceBounce = kv.Number("clock_lead_reference_bounce", 1e-6, 999, StepClockSettings.DefaultLeadReferenceBounce);
             int count = (int)kv.Number("templates", 1, 16);
             var templates = new List<StepTemplate>();
             for (int k = 0; k < count; k++)
@@ -331,7 +328,7 @@ namespace HeadGait
                 templates.Add(new StepTemplate(smv, kv.Numbers($"step_lateral.{k}", StepPoints, -1e6, 1e6),
                     kv.Number($"contact_lag.{k}", -0.49, 0.49), (int)kv.Number($"steps.{k}", 0, int.MaxValue, 0)));
             }
-            return new CorrelationTemplate(templates, map, minR, gate, lead, leadPerLogSpan, leadReferenceSpan);
+            return new CorrelationTemplate(templates, map, minR, gate, lead, leadPerLogBounce, leadReferenceBounce);
         }
     }
 }

@@ -50,14 +50,17 @@ namespace HeadGait
 
         /// <summary>
         /// Seconds of lead added per unit of the natural log of the walker's bounce above <see cref="LeadReferenceBounce"/>
-        /// (the detector says what its bounce is: COR the span of SMV over its matched steps, THR its recent step peaks;
+        /// (the detector says what its bounce is: COR SMV's peaks over its matched steps, THR its recent step peaks;
         /// <see cref="StepClock.FollowBounce"/>). A bouncier walker's contacts come out later: held-out, the bouncy *bn act*
         /// walkers' 25 ms late, the calm *bn fem* and *bn mas* 20 and 38 ms early. Learned (<see cref="StepClock.FitBounceLead"/>); 0 keeps the lead fixed.
         /// </summary>
         public double LeadPerLogBounce = 0;
 
         /// <summary>The bounce at which the lead is <see cref="Lead"/> (m/s^2; the training contacts' median).</summary>
-        public double LeadReferenceBounce = 5;
+        public double LeadReferenceBounce = DefaultLeadReferenceBounce;
+
+        /// <summary>The reference bounce of files that give none (m/s^2); with no slope it changes nothing.</summary>
+        public const double DefaultLeadReferenceBounce = 5;
 
         /// <summary>Largest <see cref="LeadPerLogBounce"/> accepted (s), and the most the bounce adds to or takes from the lead.</summary>
         public const double MaxLeadPerLogBounce = 0.1, MaxBounceLead = 0.1;
@@ -200,7 +203,7 @@ namespace HeadGait
         public static bool FitBounceLead(IReadOnlyList<double> offsets, IReadOnlyList<double> bounces, out double perLogBounce, out double reference)
         {
             perLogBounce = 0;
-            reference = 5;
+            reference = StepClockSettings.DefaultLeadReferenceBounce;
             var x = new List<double>();
             var y = new List<double>();
             for (int i = 0; i < offsets.Count && i < bounces.Count; i++)

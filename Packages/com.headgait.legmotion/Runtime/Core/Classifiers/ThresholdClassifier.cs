@@ -136,7 +136,7 @@ namespace HeadGait
             s.Clock.ContactsToStart = (int)kv.Number("contacts_to_start", 1, 4, s.Clock.ContactsToStart);
             s.Clock.Lead = kv.Number("clock_lead", -0.49, 0.49, 0);
             s.Clock.LeadPerLogBounce = kv.Number("clock_lead_per_log_bounce", -StepClockSettings.MaxLeadPerLogBounce, StepClockSettings.MaxLeadPerLogBounce, 0);
-            s.Clock.LeadReferenceBounce = kv.Number("clock_lead_reference_bounce", 1e-6, 999, s.Clock.LeadReferenceBounce);
+            s.Clock.LeadReferenceBounce = kv.Number("clock_lead_reference_bounce", 1e-6, 999, StepClockSettings.DefaultLeadReferenceBounce);
             if (kv.Has("walking_gate")) s.Gate = kv.Gate("walking_gate");
             return s;
         }
