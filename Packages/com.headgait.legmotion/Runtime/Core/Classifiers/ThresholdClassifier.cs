@@ -334,24 +334,11 @@ namespace HeadGait
             var shifts = new List<double>();
             var probe = s.Clone();
             probe.ContactLag = 0;
-            foreach (var rec in list)
+            Match(probe, list, (offset, thr) =>
             {
-                var thr = new ThresholdClassifier(probe);
-                var detections = new List<double>();
-                thr.ContactDetected += (t, e) =>
-                {
-                    detections.Add(t);
-                    shifts.Add(thr.datingShift);
-                };
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
-                foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
-                var contacts = PhaseEvents.TruthContacts(rec);
-                foreach (var d in detections)
-                {
-                    double nearest = PhaseEvents.OffsetFromNearest(contacts, d);
-                    if (Math.Abs(nearest) <= 0.2) lags.Add(nearest);
-                }
-            }
+                shifts.Add(thr.datingShift);
+                if (Math.Abs(offset) <= 0.2) lags.Add(offset);
+            });
             if (lags.Count >= 8) s.ContactLag = Math.Max(-0.45, Math.Min(0.45, GaitMetrics.Median(lags)));
             // The profile ends where contacts are detected: the dated contact plus how much earlier than its crossing it was dated.
             double shift = shifts.Count > 0 ? GaitMetrics.Median(shifts) : 0;
@@ -381,26 +368,34 @@ namespace HeadGait
             var bounces = new List<double>();
             var fitted = s.Clone();
             fitted.Clock.LeadPerLogBounce = 0;
-            foreach (var rec in list)
+            Match(fitted, list, (offset, thr) =>
             {
-                var thr = new ThresholdClassifier(fitted);
-                var contacts = PhaseEvents.TruthContacts(rec);
-                thr.ContactDetected += (t, e) =>
-                {
-                    double offset = PhaseEvents.OffsetFromNearest(contacts, t);
-                    if (Math.Abs(offset) > 0.15) return;
-                    offsets.Add(offset);
-                    bounces.Add(thr.WalkBounce);
-                };
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
-                foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
-            }
+                if (Math.Abs(offset) > 0.15) return;
+                offsets.Add(offset);
+                bounces.Add(thr.WalkBounce);
+            });
             if (StepClock.FitBounceLead(offsets, bounces, out double perLogBounce, out double reference))
             {
                 s.Clock.LeadPerLogBounce = perLogBounce;
                 s.Clock.LeadReferenceBounce = reference;
             }
             return s;
+        }
+
+        /// <summary>
+        /// Replays each recording through THR with <paramref name="probe"/> and reports, for every contact its clock takes,
+        /// the offset from the nearest true contact and the classifier as it stands then.
+        /// </summary>
+        static void Match(ThresholdSettings probe, IEnumerable<Recording> recordings, Action<double, ThresholdClassifier> onContact)
+        {
+            foreach (var rec in recordings)
+            {
+                var thr = new ThresholdClassifier(probe);
+                var contacts = PhaseEvents.TruthContacts(rec);
+                thr.ContactDetected += (t, e) => onContact(PhaseEvents.OffsetFromNearest(contacts, t), thr);
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+                foreach (var r in rec.Samples) pre.Push(r.Imu, w => thr.Classify(w));
+            }
         }
     }
 }
