@@ -552,6 +552,31 @@ namespace HeadGait.Tests
             Assert.That(clock.PeriodMeasured, Is.False);
         }
 
+        /// <summary>Slow steps of 0.8 s, each with a second bump 0.4 s after its contact that a detector also reports.</summary>
+        static (int taken, double period) SlowStepsWithSecondBumps(double minStepShare)
+        {
+            var clock = new StepClock(PhaseMap.Perry, new StepClockSettings { ContactsToStart = 1, MinStepShare = minStepShare });
+            int taken = 0;
+            for (int step = 0; step < 8; step++)
+            {
+                double side = step % 2 == 0 ? 1 : -1;
+                if (clock.Contact(0.8 * step, side)) taken++;
+                if (step > 0 && clock.Contact(0.8 * step + 0.4, -side)) taken++;
+            }
+            return (taken, clock.StepPeriod);
+        }
+
+        [Test]
+        public void OnceThePeriodIsKnownABumpHalfAStepAfterAContactIsNotAStep()
+        {
+            var kept = SlowStepsWithSecondBumps(new StepClockSettings().MinStepShare);
+            Assert.That(kept.taken, Is.EqualTo(8), "only the steps");
+            Assert.That(kept.period, Is.EqualTo(0.8).Within(1e-9));
+            var off = SlowStepsWithSecondBumps(0);
+            Assert.That(off.taken, Is.GreaterThan(12), "every bump counts without it");
+            Assert.That(off.period, Is.LessThan(0.5), "and the clock runs at twice the step rate");
+        }
+
         [Test]
         public void ALateConfirmedContactDoesNotMoveTheStrideBackNorLandAFootTwice()
         {
