@@ -26,23 +26,25 @@ namespace HeadGait.Cli
             var pose = new Option<string[]>("--pose") { Description = "head-pose recordings of the same clips (e.g. ../shared/data/pose-train): each fold's classifiers also score the pose recordings of its held-out clips through the XR pose path", AllowMultipleArgumentsPerToken = true };
             var perRecording = new Option<string>("--per-recording") { Description = "also write every held-out recording's scores to this CSV (which recordings fail, and how)" };
             var earLike = new Option<bool>("--ear-like") { Description = $"also score each held-out clip with its sideways and forward acceleration halved and {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower, as a real ear-worn sensor and slower walkers differ from mocap-derived signals" };
+            var slow = new Option<bool>("--slow") { Description = $"also score each held-out clip {100 * (RecordingAugmentation.SlowStretch - 1):F0} % slower, every movement scaled by 1/{RecordingAugmentation.SlowStretch}^2 and sideways and forward also by {RecordingAugmentation.SlowSidewaysGain}: a calmer, slower walker than any the classifiers trained on" };
             var tilted = new Option<bool>("--tilted") { Description = $"also score each held-out clip as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees would give it (a headset worn tilted, a head held looking down)" };
             var turned = new Option<bool>("--turned") { Description = $"also score each held-out clip as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks would give it (looking around while walking)" };
             var startStop = new Option<bool>("--start-stop") { Description = "also score each held-out walking clip made into a walk that starts and stops (standing, the walk growing in from a toe-off and fading out to a contact, standing): how late each classifier starts and stops on people's steps" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, tilted, turned, startStop,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, startStop,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(startStop)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(startStop)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool tilted, bool turned, bool startStop)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool startStop)
         {
             // Held-out clips changed as a real sensor or walk might differ from these recordings: each is scored by the same fold's classifiers.
             var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
             if (earLike) variants.Add(("ear-like", $"made ear-like (sideways and forward acceleration halved, {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower)", RecordingAugmentation.EarLike));
+            if (slow) variants.Add(("slow", $"made slow ({100 * (RecordingAugmentation.SlowStretch - 1):F0} % slower, calmer: movement over {RecordingAugmentation.SlowStretch}^2, sideways and forward also x{RecordingAugmentation.SlowSidewaysGain})", RecordingAugmentation.Slow));
             if (turned) variants.Add(("turned", $"as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks gives them", r => RecordingAugmentation.Turned(r)));
             if (tilted) variants.Add(("tilted", $"as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees gives them", r => RecordingAugmentation.Tilted(r)));
             // Seeded by the clip's name, so every fold and classifier scores the same made-up starts and stops.

@@ -449,16 +449,21 @@ namespace HeadGait.Tests
             }
         }
 
-        [Test]
-        public void AnEarLikeCopyIsSlowerAndSwaysLess()
+        [TestCase("ear-like", RecordingAugmentation.EarLikeStretch, RecordingAugmentation.EarLikeSidewaysGain)]
+        [TestCase("slow", RecordingAugmentation.SlowStretch, RecordingAugmentation.SlowSidewaysGain)]
+        public void AnEarLikeOrSlowCopyIsSlowerAndSwaysLess(string variant, double stretch, double sidewaysGain)
         {
             var rec = TestData.Eval("walk_straight");
-            var ear = RecordingAugmentation.EarLike(rec);
-            Assert.That(ear.Name, Is.EqualTo(rec.Name), "scored as the same clip");
-            Assert.That(ear.Duration, Is.EqualTo(rec.Duration * RecordingAugmentation.EarLikeStretch).Within(0.02));
-            double slower = 1 / (RecordingAugmentation.EarLikeStretch * RecordingAugmentation.EarLikeStretch);
-            Assert.That(Spread(ear, a => a.Z) / Spread(rec, a => a.Z), Is.EqualTo(slower).Within(0.1));
-            Assert.That(Spread(ear, a => a.Y) / Spread(rec, a => a.Y), Is.EqualTo(slower * RecordingAugmentation.EarLikeSidewaysGain).Within(0.1));
+            var copy = variant == "slow" ? RecordingAugmentation.Slow(rec) : RecordingAugmentation.EarLike(rec);
+            Assert.That(copy.Name, Is.EqualTo(rec.Name), "scored as the same clip");
+            Assert.That(copy.Duration, Is.EqualTo(rec.Duration * stretch).Within(0.02));
+            double slower = 1 / (stretch * stretch);
+            Assert.That(Spread(copy, a => a.Z) / Spread(rec, a => a.Z), Is.EqualTo(slower).Within(0.1));
+            Assert.That(Spread(copy, a => a.Y) / Spread(rec, a => a.Y), Is.EqualTo(slower * sidewaysGain).Within(0.1));
+            var steps = PhaseEvents.TruthContacts(rec);
+            var slowSteps = PhaseEvents.TruthContacts(copy);
+            Assert.That(slowSteps.Count, Is.EqualTo(steps.Count), "the same steps");
+            Assert.That(slowSteps[slowSteps.Count - 1].Time - slowSteps[0].Time, Is.EqualTo(stretch * (steps[steps.Count - 1].Time - steps[0].Time)).Within(0.05), "each taking longer");
         }
 
         [Test]

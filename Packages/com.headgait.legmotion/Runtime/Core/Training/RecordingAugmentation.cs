@@ -81,11 +81,26 @@ namespace HeadGait.Training
         /// stretched by <see cref="EarLikeStretch"/> with every dynamic part scaled by 1/stretch^2, as a walk slowed down
         /// accelerates less, and the sideways and forward ones also by <see cref="EarLikeSidewaysGain"/>. Same name.
         /// </summary>
-        public static Recording EarLike(Recording source)
+        public static Recording EarLike(Recording source) => SlowedDown(source, EarLikeStretch, EarLikeSidewaysGain);
+
+        /// <summary>
+        /// How much slower and how much weaker sideways and forwards <see cref="Slow"/> makes a recording: 40 % slower than
+        /// the actors (their median step of 0.55 s becomes 0.77 s, 78 steps a minute), as a calm or elderly walker might go.
+        /// </summary>
+        public const double SlowStretch = 1.4, SlowSidewaysGain = 0.7;
+
+        /// <summary>
+        /// The recording as a much slower, calmer walker might give it (the benchmark's <c>--slow</c>): time stretched by
+        /// <see cref="SlowStretch"/>, every dynamic part scaled by 1/stretch^2 and the sideways and forward ones also by
+        /// <see cref="SlowSidewaysGain"/>: slower than any copy the classifiers trained on (<see cref="AugmentationSettings.MaxStretch"/>). Same name.
+        /// </summary>
+        public static Recording Slow(Recording source) => SlowedDown(source, SlowStretch, SlowSidewaysGain);
+
+        /// <summary>Time stretched by <paramref name="stretch"/>, the dynamic part scaled by 1/stretch^2 and sideways and forwards also by <paramref name="sidewaysGain"/>. Same name.</summary>
+        static Recording SlowedDown(Recording source, double stretch, double sidewaysGain)
         {
-            double gain = 1 / (EarLikeStretch * EarLikeStretch);
-            return Transform(source, EarLikeStretch, gain * EarLikeSidewaysGain, gain * EarLikeSidewaysGain, gain,
-                new AugmentationSettings().SlowWindowSeconds, source.Name);
+            double gain = 1 / (stretch * stretch);
+            return Transform(source, stretch, gain * sidewaysGain, gain * sidewaysGain, gain, new AugmentationSettings().SlowWindowSeconds, source.Name);
         }
 
         /// <summary>
