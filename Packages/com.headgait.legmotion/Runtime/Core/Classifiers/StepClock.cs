@@ -11,10 +11,10 @@ namespace HeadGait
         /// <summary>
         /// Once the walk's step period is measured, a contact sooner than this share of it after the previous one is a
         /// second bump of the same step, not a step: a calm walker's SMV can peak twice per step (the second corpus's
-        /// *feminine* style does), and once slowed down both peaks lie further apart than <see cref="MinStepInterval"/>. Leave-one-style-out, THR: held-out clips 40 % slower and calmer (dynamic part
-        /// over 1.4^2, sideways and forwards a further 0.7) 48.0 to 44.3 % (0.7: 44.1 %), ear-like 34.0 to 33.1 %, as
-        /// recorded 24.5 to 24.4 %, walks made to start and stop unchanged; COR, which searches only around the period,
-        /// within 0.1 point. 0 turns it off.
+        /// *feminine* style does), and once slowed down both peaks lie further apart than <see cref="MinStepInterval"/>.
+        /// Leave-one-style-out, THR: held-out clips 40 % slower and calmer (dynamic part over 1.4^2, sideways and forwards
+        /// a further 0.7) 48.0 to 44.3 % (0.7: 44.1 %), ear-like 34.0 to 33.1 %, as recorded 24.5 to 24.4 %, walks made
+        /// to start and stop unchanged; COR, which searches only around the period, within 0.1 point. 0 turns it off.
         /// </summary>
         public double MinStepShare = 0.6;
 
