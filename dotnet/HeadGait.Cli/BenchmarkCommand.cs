@@ -24,7 +24,7 @@ namespace HeadGait.Cli
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => GaitTraining.DefaultAugmentedCopies };
             var perFold = new Option<bool>("--per-fold") { Description = "also print each fold's rows" };
             var pose = new Option<string[]>("--pose") { Description = "head-pose recordings of the same clips (e.g. ../shared/data/pose-train): each fold's classifiers also score the pose recordings of its held-out clips through the XR pose path", AllowMultipleArgumentsPerToken = true };
-            var perRecording = new Option<string>("--per-recording") { Description = "also write every held-out recording's scores to this CSV (which recordings fail, and how)" };
+            var perRecording = new Option<string>("--per-recording") { Description = "also write every held-out recording's scores to this CSV (which recordings fail, and how), the variants' and pose path's too" };
             var earLike = new Option<bool>("--ear-like") { Description = $"also score each held-out clip with its sideways and forward acceleration halved and {100 * (RecordingAugmentation.EarLikeStretch - 1):F0} % slower, as a real ear-worn sensor and slower walkers differ from mocap-derived signals" };
             var slow = new Option<bool>("--slow") { Description = $"also score each held-out clip {100 * (RecordingAugmentation.SlowStretch - 1):F0} % slower, every movement scaled by 1/{RecordingAugmentation.SlowStretch}^2 and sideways and forward also by {RecordingAugmentation.SlowSidewaysGain}: a calmer, slower walker than any the classifiers trained on" };
             var tilted = new Option<bool>("--tilted") { Description = $"also score each held-out clip as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees would give it (a headset worn tilted, a head held looking down)" };
@@ -95,10 +95,16 @@ namespace HeadGait.Cli
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
                         perRecordingRows.AddRange(results.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Result = r }));
-                        foreach (var p in poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))))
-                            pooledPose[name].Add(ReplayEvaluator.Run(p, InFold(foldModels.Create(name, out _), gates.Learned, map)));
+                        var poseResults = poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name)))
+                            .Select(p => ReplayEvaluator.Run(p, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
+                        pooledPose[name].AddRange(poseResults);
+                        perRecordingRows.AddRange(poseResults.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Variant = "pose", Result = r }));
                         for (int v = 0; v < variants.Count; v++)
-                            pooledVariant[v][name].AddRange(variantTests[v].Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))));
+                        {
+                            var variantResults = variantTests[v].Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
+                            pooledVariant[v][name].AddRange(variantResults);
+                            perRecordingRows.AddRange(variantResults.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Variant = variants[v].Label, Result = r }));
+                        }
                     }
                 }
                 Console.WriteLine();

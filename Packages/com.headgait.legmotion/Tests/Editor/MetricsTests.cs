@@ -165,7 +165,9 @@ namespace HeadGait.Tests
                 ReplayEvaluator.Run(odd, new CorrelationClassifier(TestData.Template)),
             };
             var writer = new System.IO.StringWriter();
-            RecordingScoresCsv.Write(writer, results.ConvertAll(r => new RecordingScoresCsv.Row { Scheme = "style", Fold = "bn/act", Result = r }));
+            var rows = results.ConvertAll(r => new RecordingScoresCsv.Row { Scheme = "style", Fold = "bn/act", Result = r });
+            rows[1] = new RecordingScoresCsv.Row { Scheme = "style", Fold = "bn/act", Variant = "slow", Result = results[1] };
+            RecordingScoresCsv.Write(writer, rows);
             var lines = writer.ToString().TrimEnd('\n', '\r').Split('\n');
             Assert.That(lines[0].TrimEnd('\r'), Is.EqualTo(RecordingScoresCsv.Header));
             Assert.That(lines.Length, Is.EqualTo(5), "header, then classifier and avatar rows per replay");
@@ -174,13 +176,14 @@ namespace HeadGait.Tests
             var thrAvatar = lines[2].TrimEnd('\r').Split(',');
             var m = results[0].AnimatorMetrics;
             Assert.That(thrAvatar[header.IndexOf("recording")], Is.EqualTo("start_stop"));
+            Assert.That(thrAvatar[header.IndexOf("variant")], Is.EqualTo(RecordingScoresCsv.AsRecorded), "a row without a variant is the clip as recorded");
             Assert.That(thrAvatar[header.IndexOf("classifier")], Is.EqualTo("THR"));
             Assert.That(thrAvatar[header.IndexOf("output")], Is.EqualTo("avatar"));
             Assert.That(double.Parse(thrAvatar[header.IndexOf("miscl")], System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(m.MisclassificationRate).Within(1e-6));
             Assert.That(double.Parse(thrAvatar[header.IndexOf("standing_as_walking")], System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(m.StandingAsWalking).Within(1e-6));
             Assert.That(int.Parse(thrAvatar[header.IndexOf("true_steps")]), Is.EqualTo(m.TrueSteps).And.GreaterThan(5));
             Assert.That(int.Parse(thrAvatar[header.IndexOf("predicted_steps")]), Is.EqualTo(m.PredictedSteps));
-            Assert.That(lines[3], Does.StartWith("style,bn/act,\"walk, \"\"quoted\"\"\",COR,clf,"), "a name with a comma or quote is quoted");
+            Assert.That(lines[3], Does.StartWith("style,bn/act,slow,\"walk, \"\"quoted\"\"\",COR,clf,"), "a name with a comma or quote is quoted");
         }
     }
 }

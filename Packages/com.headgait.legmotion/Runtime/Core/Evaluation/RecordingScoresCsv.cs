@@ -6,16 +6,21 @@ namespace HeadGait
 {
     /// <summary>
     /// One CSV row per scored recording, classifier and output (classifier or avatar): which recordings fail, and how.
-    /// Written by <c>headgait benchmark --per-recording</c>; shares are fractions (0..1), counts are samples or steps.
+    /// Written by <c>headgait benchmark --per-recording</c>; shares are fractions (0..1), counts are samples or steps. The
+    /// variant says what was scored: the clip as recorded, changed as the benchmark's variants change it (ear-like, slow, ...),
+    /// or its head-pose recording through the pose path.
     /// </summary>
     public static class RecordingScoresCsv
     {
-        public const string Header = "scheme,fold,recording,classifier,output,samples,miscl,beyond_adjacent,walking_samples,walking_as_standing,standing_samples,standing_as_walking,true_steps,predicted_steps,matched_steps,right_foot,true_walking_bouts,shown_walking_bouts";
+        public const string Header = "scheme,fold,variant,recording,classifier,output,samples,miscl,beyond_adjacent,walking_samples,walking_as_standing,standing_samples,standing_as_walking,true_steps,predicted_steps,matched_steps,right_foot,true_walking_bouts,shown_walking_bouts";
 
-        /// <summary>A held-out recording's replay and the cross-validation fold that held it out.</summary>
+        /// <summary>What <see cref="Row.Variant"/> says of a clip scored as it was recorded.</summary>
+        public const string AsRecorded = "recorded";
+
+        /// <summary>A held-out recording's replay, the cross-validation fold that held it out and the variant scored (null: <see cref="AsRecorded"/>).</summary>
         public struct Row
         {
-            public string Scheme, Fold;
+            public string Scheme, Fold, Variant;
             public ReplayResult Result;
         }
 
@@ -34,7 +39,7 @@ namespace HeadGait
         {
             if (m == null) return;
             var r = row.Result;
-            w.WriteLine(string.Join(",", Field(row.Scheme), Field(row.Fold), Field(r.Recording), Field(r.Classifier), output,
+            w.WriteLine(string.Join(",", Field(row.Scheme), Field(row.Fold), Field(row.Variant ?? AsRecorded), Field(r.Recording), Field(r.Classifier), output,
                 (m.Comparisons / 2).ToString(CultureInfo.InvariantCulture), Share(m.MisclassificationRate), Share(m.MisclassificationBeyondAdjacent),
                 m.WalkingSamples.ToString(CultureInfo.InvariantCulture), Share(m.WalkingAsStanding),
                 m.StandingSamples.ToString(CultureInfo.InvariantCulture), Share(m.StandingAsWalking),
