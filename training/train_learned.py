@@ -348,6 +348,7 @@ def main():
     ap.add_argument("--evaluate", action="store_true",
                     help="also score the excluded recordings' windows (per-foot phase error of the classifier output, no animator): a quick check for grid searches")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--seed", type=int, default=SEED, help="seeds the SVM's window draw and the BLSTM's initialisation and batches")
     args = ap.parse_args()
 
     import torch
@@ -382,7 +383,7 @@ def main():
         T, C = X.shape[1], X.shape[2]
         t0 = time.time()
         log(f"BLSTM: hidden {args.hidden}, dropout {args.dropout}, {args.epochs} epochs, lr {args.lr}, {len(X)} windows of {T}x{C}")
-        model = train_blstm(X, y, mean, scale, k, args.hidden, args.dropout, args.epochs, args.lr, args.batch, SEED)
+        model = train_blstm(X, y, mean, scale, k, args.hidden, args.dropout, args.epochs, args.lr, args.batch, args.seed)
         prov = dict(provenance, hyperparameters=f"hidden={args.hidden} dropout={args.dropout} epochs={args.epochs} lr={args.lr} batch={args.batch} adam onecycle")
         path = os.path.join(args.out, "blstm.bytes")
         save_blstm(path, model, ds, mean, scale, prov)
@@ -402,7 +403,7 @@ def main():
         t0 = time.time()
         log(f"SVM: polynomial degree {args.svm_degree}, C {args.svm_c}, gamma {args.svm_gamma}, coef0 {args.svm_coef0}, up to {args.svm_windows} windows")
         gamma = args.svm_gamma if args.svm_gamma in ("scale", "auto") else float(args.svm_gamma)
-        svm = train_svm(Xs, y, args.svm_c, args.svm_degree, gamma, args.svm_coef0, args.svm_windows, SEED)
+        svm = train_svm(Xs, y, args.svm_c, args.svm_degree, gamma, args.svm_coef0, args.svm_windows, args.seed)
         sv, dual, intercept, nsup = svm_arrays(svm, ds.classes)
         flat = Xs[ref_idx].reshape(len(ref_idx), -1).astype(np.float64)
         dec = svm_decision_numpy(sv, dual, intercept, nsup, svm._gamma, svm.coef0, svm.degree, flat)
