@@ -89,6 +89,22 @@ namespace HeadGait.Tests
 
         public static ImuSample Still(double t) => new ImuSample(t, 0, 0, 9.80665);
 
+        /// <summary>What <paramref name="read"/> gives at each full window, with whether the labels say walking there.</summary>
+        public static List<(bool Walking, T Value)> PerWindowTruth<T>(Recording r, int history, Func<SignalWindow, T> read)
+        {
+            var rows = new List<(bool, T)>();
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = history });
+            int row = -1;
+            foreach (var s in r.Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    while (row + 1 < r.Samples.Count && r.Samples[row + 1].Imu.Time <= w.EndTime + 1e-9) row++;
+                    if (w.Count >= w.Length && row >= 0 && r.Samples[row].HasTruth)
+                        rows.Add((r.Samples[row].Left != GaitPhase.Standing, read(w)));
+                });
+            return rows;
+        }
+
         /// <summary>What <paramref name="read"/> makes of every full window (<paramref name="history"/> samples) of a recording.</summary>
         public static List<T> PerWindow<T>(Recording r, int history, Func<SignalWindow, T> read)
         {
