@@ -91,20 +91,19 @@ namespace HeadGait.Cli
                             missing.Add($"{name} {fold.Name}");
                             continue;
                         }
-                        var results = test.Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
+                        // Each held-out recording replayed by a fresh classifier of this fold; every score also goes to the per-recording rows.
+                        List<ReplayResult> Score(IEnumerable<Recording> recordings, string variant)
+                        {
+                            var scored = recordings.Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
+                            perRecordingRows.AddRange(scored.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Variant = variant, Result = r }));
+                            return scored;
+                        }
+                        var results = Score(test, null);
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));
-                        perRecordingRows.AddRange(results.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Result = r }));
-                        var poseResults = poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name)))
-                            .Select(p => ReplayEvaluator.Run(p, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
-                        pooledPose[name].AddRange(poseResults);
-                        perRecordingRows.AddRange(poseResults.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Variant = "pose", Result = r }));
+                        pooledPose[name].AddRange(Score(poses.Where(p => fold.IsTest(CrossValidation.ClipOf(p.Name))), "pose"));
                         for (int v = 0; v < variants.Count; v++)
-                        {
-                            var variantResults = variantTests[v].Select(r => ReplayEvaluator.Run(r, InFold(foldModels.Create(name, out _), gates.Learned, map))).ToList();
-                            pooledVariant[v][name].AddRange(variantResults);
-                            perRecordingRows.AddRange(variantResults.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Variant = variants[v].Label, Result = r }));
-                        }
+                            pooledVariant[v][name].AddRange(Score(variantTests[v], variants[v].Label));
                     }
                 }
                 Console.WriteLine();
