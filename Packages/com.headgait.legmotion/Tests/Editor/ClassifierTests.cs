@@ -350,6 +350,40 @@ namespace HeadGait.Tests
             Assert.That(PeriodAfterAGuessedStart(6), Is.Not.EqualTo(0.55).Within(0.05), "searched as narrowly as a measured period");
         }
 
+        /// <summary>
+        /// A walk made of the template that slows from 0.6 to 0.75 s steps at 4 s: how far COR's contacts after the
+        /// slowing come from the true ones (ms, negative early). The clock's period follows each new step only partly, so
+        /// the steps searched lag behind the walker's.
+        /// </summary>
+        static List<double> ContactOffsetsAfterSlowingDown(double toleranceShare)
+        {
+            var t = OpenTemplate;
+            var cor = new CorrelationClassifier(t, new CorrelationSettings { PeriodToleranceShare = toleranceShare });
+            var pipeline = new GaitPipeline(cor);
+            var slow = TemplateWalk(t, 6, out var slowContacts, step: 0.75);
+            var offsets = new List<double>();
+            cor.ContactDetected += (time, e, r, k) =>
+            {
+                double nearest = slowContacts.Select(c => c + 4).OrderBy(c => Math.Abs(c - time)).First();
+                if (time > 4.5 && Math.Abs(time - nearest) <= 0.25) offsets.Add(1000 * (time - nearest));
+            };
+            foreach (var s in TemplateWalk(t, 4, out _, step: 0.6)) pipeline.Push(s);
+            foreach (var s in slow) pipeline.Push(new ImuSample(4 + s.Time, s.X, -s.Y, s.Z));
+            return offsets;
+        }
+
+        [Test]
+        public void ASlowingWalkersContactsComeOnTimeSoonerWhenTheSearchReachesAShareOfThePeriod()
+        {
+            var share = ContactOffsetsAfterSlowingDown(0.12);
+            var fixedReach = ContactOffsetsAfterSlowingDown(0);
+            Assert.That(share.Count, Is.GreaterThanOrEqualTo(6), "the slowed walk is followed");
+            Assert.That(fixedReach.Count, Is.GreaterThanOrEqualTo(6));
+            int EarlyCount(List<double> o) => o.Count(x => x <= -20);
+            Assert.That(EarlyCount(share), Is.LessThan(EarlyCount(fixedReach)), $"contacts 20 ms early or more: {string.Join(", ", share)} against {string.Join(", ", fixedReach)}");
+            Assert.That(share.Skip(4), Is.All.InRange(-10.0, 10.0), "on time from the fifth slow step on");
+        }
+
         [Test]
         public void SearchSettingsOutOfRangeAreRefusedNamingTheSetting()
         {
@@ -359,6 +393,7 @@ namespace HeadGait.Tests
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { StartMaxStepSamples = 10 }), Throws.ArgumentException.With.Message.Contains("StartMaxStepSamples"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { FirstStepTolerance = -1 }), Throws.ArgumentException.With.Message.Contains("FirstStepTolerance"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { PeriodTolerance = -1 }), Throws.ArgumentException.With.Message.Contains("PeriodTolerance"));
+            Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { PeriodToleranceShare = double.NaN }), Throws.ArgumentException.With.Message.Contains("PeriodToleranceShare"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { OnsetSpanRatio = double.NaN }), Throws.ArgumentException.With.Message.Contains("OnsetSpanRatio"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { OnsetSpanRatio = -1 }), Throws.ArgumentException.With.Message.Contains("OnsetSpanRatio"));
             Assert.That(() => new CorrelationClassifier(t, new CorrelationSettings { StartMaxStepSamples = 30, FirstStepTolerance = 0 }), Throws.Nothing);
