@@ -155,5 +155,25 @@ namespace HeadGait.Tests
             Assert.That(lenient.Warnings[0], Does.Contain("line 4").And.Contain("limit"));
             Assert.That(lenient.Warnings[1], Does.Contain("line 5").And.Contain("acc_y"));
         }
+
+        [Test]
+        public void ALabelCursorGivesTheLabelsInForceAtEachTimeAndNoneBeforeTheFirstOrOnAnUnlabelledRow()
+        {
+            var rec = RecordingCsv.Parse(
+                "timestamp_s,acc_x,acc_y,acc_z,phase_left,phase_right\n" +
+                "0.10,0,0,9.81,STAND,STAND\n" +
+                "0.20,0,0,9.81,IC,PSW\n" +
+                "0.30,0,0,9.81,,\n" +
+                "0.40,0,0,9.81,LR,ISW\n");
+            var cursor = new LabelCursor(rec);
+            Assert.That(cursor.TryLabelsAt(0.05, out _), Is.False, "before the first row");
+            Assert.That(cursor.TryLabelsAt(0.15, out var a), Is.True);
+            Assert.That(a.Left, Is.EqualTo(GaitPhase.Standing));
+            Assert.That(cursor.TryLabelsAt(0.2 - 1e-10, out var b), Is.True, "a time within 1e-9 of a row is at it");
+            Assert.That((b.Left, b.Right), Is.EqualTo((GaitPhase.InitialContact, GaitPhase.PreSwing)));
+            Assert.That(cursor.TryLabelsAt(0.35, out _), Is.False, "the row in force holds no labels");
+            Assert.That(cursor.TryLabelsAt(9, out var c), Is.True, "after the last row, the last row's");
+            Assert.That((c.Left, c.Right), Is.EqualTo((GaitPhase.LoadingResponse, GaitPhase.InitialSwing)));
+        }
     }
 }

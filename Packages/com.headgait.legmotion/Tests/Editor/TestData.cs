@@ -94,13 +94,12 @@ namespace HeadGait.Tests
         {
             var rows = new List<(bool, T)>();
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = history });
-            int row = -1;
+            var labels = new LabelCursor(r);
             foreach (var s in r.Samples)
                 pre.Push(s.Imu, w =>
                 {
-                    while (row + 1 < r.Samples.Count && r.Samples[row + 1].Imu.Time <= w.EndTime + 1e-9) row++;
-                    if (w.Count >= w.Length && row >= 0 && r.Samples[row].HasTruth)
-                        rows.Add((r.Samples[row].Left != GaitPhase.Standing, read(w)));
+                    if (labels.TryLabelsAt(w.EndTime, out var truth) && w.Count >= w.Length)
+                        rows.Add((truth.Left != GaitPhase.Standing, read(w)));
                 });
             return rows;
         }

@@ -298,21 +298,19 @@ namespace HeadGait
             {
                 if (!rec.HasTruth) continue;
                 var pre = new StreamPreprocessor(new PreprocessorSettings { History = HistorySamples });
-                int row = -1;
+                var labels = new LabelCursor(rec);
                 long count = 0;
-                var rows = rec.Samples;
-                foreach (var s in rows)
+                foreach (var s in rec.Samples)
                 {
                     pre.Push(s.Imu, w =>
                     {
                         if (count++ % 5 != 0) return;
-                        while (row + 1 < rows.Count && rows[row + 1].Imu.Time <= w.EndTime + 1e-9) row++;
-                        if (row < 0 || !rows[row].HasTruth) return;
+                        if (!labels.TryLabelsAt(w.EndTime, out var truth)) return;
                         var f = new double[FeatureCount];
                         Features(w, f, levelTolerance);
                         var x = new double[InputCount];
                         FillInputs(f, x);
-                        (rows[row].Left == GaitPhase.Standing ? standing : walking).Add(x);
+                        (truth.Left == GaitPhase.Standing ? standing : walking).Add(x);
                     });
                 }
             }

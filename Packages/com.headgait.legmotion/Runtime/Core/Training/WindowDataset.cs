@@ -61,17 +61,15 @@ namespace HeadGait.Training
                     var rec = item.Recording;
                     if (!rec.HasTruth) continue;
                     var pre = new StreamPreprocessor(new PreprocessorSettings { WindowLength = features.Samples });
-                    var rows = rec.Samples;
-                    int labelRow = -1;
+                    var labels = new LabelCursor(rec);
                     long produced = 0;
-                    foreach (var s in rows)
+                    foreach (var s in rec.Samples)
                     {
                         pre.Push(s.Imu, w =>
                         {
                             if (produced++ % stride != 0) return;
-                            while (labelRow + 1 < rows.Count && rows[labelRow + 1].Imu.Time <= w.EndTime + labelLead + 1e-9) labelRow++;
-                            if (labelRow < 0 || !rows[labelRow].HasTruth) return;
-                            int cls = segments.ClassOf(rows[labelRow].Left, rows[labelRow].Right);
+                            if (!labels.TryLabelsAt(w.EndTime + labelLead, out var truth)) return;
+                            int cls = segments.ClassOf(truth.Left, truth.Right);
                             features.Extract(w, buffer);
                             foreach (var v in buffer) x.Write((float)v);
                             y.Write(cls);
