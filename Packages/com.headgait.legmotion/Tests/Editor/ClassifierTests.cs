@@ -581,7 +581,9 @@ namespace HeadGait.Tests
             Assert.That(clock.PeriodMeasured, Is.True);
             Assert.That(clock.StepPeriod, Is.EqualTo(0.55).Within(1e-9), "the first interval replaces the guess");
             clock.Contact(4.15, 1);
-            Assert.That(clock.StepPeriod, Is.EqualTo(0.7 * 0.55 + 0.3 * 0.6).Within(1e-9), "later intervals are smoothed in");
+            double w = clock.Settings.PeriodWeight;
+            Assert.That(w, Is.GreaterThan(0).And.LessThan(1));
+            Assert.That(clock.StepPeriod, Is.EqualTo((1 - w) * 0.55 + w * 0.6).Within(1e-9), "later intervals are weighed in");
 
             clock.Stop();
             Assert.That(clock.PeriodMeasured, Is.False);
@@ -599,6 +601,14 @@ namespace HeadGait.Tests
                 if (step > 0 && clock.Contact(0.8 * step + 0.4, -side)) taken++;
             }
             return (taken, clock.StepPeriod);
+        }
+
+        [Test]
+        public void APeriodWeightOutsideZeroToOneIsRefusedNamingIt()
+        {
+            foreach (var w in new[] { 0.0, -0.1, 1.5, double.NaN })
+                Assert.That(() => new StepClock(PhaseMap.Perry, new StepClockSettings { PeriodWeight = w }), Throws.ArgumentException.With.Message.Contains("PeriodWeight"), w.ToString());
+            Assert.That(() => new StepClock(PhaseMap.Perry, new StepClockSettings { PeriodWeight = 1 }), Throws.Nothing);
         }
 
         [Test]
