@@ -272,10 +272,11 @@ namespace HeadGait
                 int from = 0, to = Math.Min(periods - 1, valid - settings.MinStepSamples);
                 if (clock.IsWalking(now) && to >= 0)
                 {
-                    int tolerance = clock.PeriodMeasured ? settings.PeriodTolerance : settings.FirstStepTolerance;
                     // Until the first contact after a start at the movement's onset, around the length that start matched.
                     double searched = clock.LastContactTime == onsetContact ? onsetMatchedPeriod : clock.StepPeriod;
-                    if (clock.PeriodMeasured) tolerance = Math.Max(tolerance, (int)Math.Round(settings.PeriodToleranceShare * searched * window.SampleRate));
+                    int tolerance = clock.PeriodMeasured
+                        ? Math.Max(settings.PeriodTolerance, (int)Math.Round(settings.PeriodToleranceShare * searched * window.SampleRate))
+                        : settings.FirstStepTolerance;
                     int centre = (int)Math.Round(searched * window.SampleRate) - settings.MinStepSamples;
                     from = Math.Max(0, Math.Min(to, centre - tolerance));
                     to = Math.Max(from, Math.Min(to, centre + tolerance));
