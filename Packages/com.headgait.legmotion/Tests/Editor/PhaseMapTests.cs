@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using NUnit.Framework;
 
 namespace HeadGait.Tests
@@ -146,6 +147,8 @@ namespace HeadGait.Tests
             public string Name => "switching";
             public PhaseMap PhaseMap { get; } = PhaseMap.FromStanceFraction(0.574, 0.5, stanceSlope: 0.3, referenceStridePeriod: 1.1);
             public int WindowLength => 50;
+            public double PoseFitDelay => 0;
+            public double PredictionLead => 0;
             public void Reset() => lastTime = double.NaN;
 
             public GaitPrediction Classify(SignalWindow window)
@@ -180,6 +183,42 @@ namespace HeadGait.Tests
             }
             Assert.That(strides, Is.GreaterThan(20));
             Assert.That(landings, Is.EqualTo(strides).Within(1));
+        }
+
+        [Test]
+        public void APoseSourceIsLookedAheadFurtherByTheClassifiersPoseFitDelay()
+        {
+            // THR on a generated walk, once without and once with a pose fit delay of 20 ms: on an accelerometer (no source
+            // lag) the two must agree window for window; on the pose path the second must run 20 ms further along each step
+            // (stride positions wrap at 1).
+            var walk = TestData.Eval("walk_straight");
+            List<GaitPrediction> Run(double poseFitDelay, double sourceLag)
+            {
+                var settings = TestData.CommittedThreshold;
+                settings.Clock.PoseFitDelay = poseFitDelay;
+                var pipeline = new GaitPipeline(new ThresholdClassifier(settings)) { SourceLag = sourceLag };
+                var predictions = new List<GaitPrediction>();
+                pipeline.FrameProduced += (prediction, frame) => predictions.Add(prediction);
+                foreach (var sample in walk.Samples) pipeline.Push(sample.Imu);
+                return predictions;
+            }
+            var accelerometer = Run(0, 0);
+            var accelerometerWithDelay = Run(0.02, 0);
+            Assert.That(accelerometerWithDelay.Count, Is.EqualTo(accelerometer.Count));
+            for (int i = 0; i < accelerometer.Count; i++)
+                Assert.That(accelerometerWithDelay[i].StridePosition, Is.EqualTo(accelerometer[i].StridePosition), $"window {i}");
+
+            var pose = Run(0, 0.05);
+            var poseWithDelay = Run(0.02, 0.05);
+            int walking = 0;
+            for (int i = 0; i < pose.Count; i++)
+            {
+                Assert.That(poseWithDelay[i].IsWalking, Is.EqualTo(pose[i].IsWalking), $"window {i}");
+                if (!pose[i].IsWalking) continue;
+                walking++;
+                Assert.That(PhaseMap.Wrap(poseWithDelay[i].StridePosition - pose[i].StridePosition), Is.EqualTo(0.02 / (2 * pose[i].StepPeriod)).Within(1e-9), $"window {i}");
+            }
+            Assert.That(walking, Is.GreaterThan(pose.Count / 2));
         }
     }
 }

@@ -222,6 +222,8 @@ namespace HeadGait
         /// <summary>Newest samples the step search correlates (the longest step).</summary>
         int SearchLength => settings.MaxStepSamples;
         public PhaseMap PhaseMap => template.PhaseMap;
+        public double PoseFitDelay => settings.Clock.PoseFitDelay;
+        public double PredictionLead => 0;
         public CorrelationTemplate Template => template;
         public StepClock Clock => clock;
 

@@ -63,6 +63,20 @@ namespace HeadGait
         /// <summary>Grid samples each window must hold (the newest ones are read).</summary>
         int WindowLength { get; }
 
+        /// <summary>
+        /// Seconds later this classifier's walk comes out on acceleration fitted from tracked poses
+        /// (<see cref="PoseAccelerationEstimator"/>) than on an accelerometer's, beyond the fit's own lag: the pipeline looks
+        /// that much further ahead on such a source (<see cref="GaitPipeline.SourceLag"/>).
+        /// </summary>
+        double PoseFitDelay { get; }
+
+        /// <summary>
+        /// Seconds the pipeline moves this classifier's walking predictions ahead on every source (negative: back), for
+        /// classifiers whose phases come out early or late and that have no clock of their own to lead (THR and COR lead
+        /// theirs: 0).
+        /// </summary>
+        double PredictionLead { get; }
+
         GaitPrediction Classify(SignalWindow window);
         void Reset();
     }

@@ -43,7 +43,9 @@ namespace HeadGait
 
         /// <summary>
         /// How late the samples describe the motion (s): 0 for an accelerometer, <see cref="PoseAccelerationEstimator.Lag"/>
-        /// for acceleration derived from the tracked pose. Walking predictions are moved that far ahead before the animator.
+        /// for acceleration derived from the tracked pose. Walking predictions are moved that far ahead before the animator,
+        /// and where it is not 0 also by the classifier's <see cref="IGaitClassifier.PoseFitDelay"/>; on every source by its
+        /// <see cref="IGaitClassifier.PredictionLead"/>.
         /// </summary>
         public double SourceLag { get; set; }
         public AnimatorFrame Latest { get; private set; }
@@ -137,7 +139,8 @@ namespace HeadGait
 
         void Publish(GaitPrediction prediction)
         {
-            if (SourceLag != 0) prediction = Advanced(prediction);
+            double lead = (SourceLag != 0 ? SourceLag + classifier.PoseFitDelay : 0) + classifier.PredictionLead;
+            if (lead != 0) prediction = Advanced(prediction, lead);
             LatestPrediction = prediction;
             Latest = animator.Update(prediction);
             Windows++;
@@ -145,14 +148,14 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// The prediction moved <see cref="SourceLag"/> ahead along its own step period (standing stays standing), so the
-        /// avatar shows where the legs are now; each foot keeps its stance share from contact to contact, as in the clocks.
+        /// The prediction moved <paramref name="lead"/> seconds ahead along its own step period (standing stays standing), so
+        /// the avatar shows where the legs are now; each foot keeps its stance share from contact to contact, as in the clocks.
         /// </summary>
-        GaitPrediction Advanced(GaitPrediction p)
+        GaitPrediction Advanced(GaitPrediction p, double lead)
         {
             if (!p.IsWalking) advancedStance.Reset();
             if (!p.IsWalking || !(p.StepPeriod > 0)) return p;
-            return GaitPrediction.Walking(p.Time, p.StridePosition + SourceLag / (2 * p.StepPeriod), p.StepPeriod, p.Confidence, classifier.PhaseMap, advancedStance);
+            return GaitPrediction.Walking(p.Time, p.StridePosition + lead / (2 * p.StepPeriod), p.StepPeriod, p.Confidence, classifier.PhaseMap, advancedStance);
         }
 
         public void Reset()
