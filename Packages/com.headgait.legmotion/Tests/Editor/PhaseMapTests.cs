@@ -148,7 +148,6 @@ namespace HeadGait.Tests
             public PhaseMap PhaseMap { get; } = PhaseMap.FromStanceFraction(0.574, 0.5, stanceSlope: 0.3, referenceStridePeriod: 1.1);
             public int WindowLength => 50;
             public double PoseFitDelay => 0;
-            public double PredictionLead => 0;
             public void Reset() => lastTime = double.NaN;
 
             public GaitPrediction Classify(SignalWindow window)

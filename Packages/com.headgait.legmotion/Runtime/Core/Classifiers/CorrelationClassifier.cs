@@ -223,7 +223,6 @@ namespace HeadGait
         int SearchLength => settings.MaxStepSamples;
         public PhaseMap PhaseMap => template.PhaseMap;
         public double PoseFitDelay => settings.Clock.PoseFitDelay;
-        public double PredictionLead => 0;
         public CorrelationTemplate Template => template;
         public StepClock Clock => clock;
 

@@ -70,13 +70,6 @@ namespace HeadGait
         /// </summary>
         double PoseFitDelay { get; }
 
-        /// <summary>
-        /// Seconds the pipeline moves this classifier's walking predictions ahead on every source (negative: back), for
-        /// classifiers whose phases come out early or late and that have no clock of their own to lead (THR and COR lead
-        /// theirs: 0).
-        /// </summary>
-        double PredictionLead { get; }
-
         GaitPrediction Classify(SignalWindow window);
         void Reset();
     }

@@ -174,7 +174,6 @@ namespace HeadGait
         public int WindowLength => Math.Max(ThresholdSettings.ProfileSamples, settings.Gate.History);
         public PhaseMap PhaseMap => settings.PhaseMap;
         public double PoseFitDelay => settings.Clock.PoseFitDelay;
-        public double PredictionLead => 0;
         public ThresholdSettings Settings => settings;
         public StepClock Clock => clock;
 

@@ -44,8 +44,7 @@ namespace HeadGait
         /// <summary>
         /// How late the samples describe the motion (s): 0 for an accelerometer, <see cref="PoseAccelerationEstimator.Lag"/>
         /// for acceleration derived from the tracked pose. Walking predictions are moved that far ahead before the animator,
-        /// and where it is not 0 also by the classifier's <see cref="IGaitClassifier.PoseFitDelay"/>; on every source by its
-        /// <see cref="IGaitClassifier.PredictionLead"/>.
+        /// and where it is not 0 also by the classifier's <see cref="IGaitClassifier.PoseFitDelay"/>.
         /// </summary>
         public double SourceLag { get; set; }
         public AnimatorFrame Latest { get; private set; }
@@ -139,8 +138,7 @@ namespace HeadGait
 
         void Publish(GaitPrediction prediction)
         {
-            double lead = (SourceLag != 0 ? SourceLag + classifier.PoseFitDelay : 0) + classifier.PredictionLead;
-            if (lead != 0) prediction = Advanced(prediction, lead);
+            if (SourceLag != 0) prediction = Advanced(prediction, SourceLag + classifier.PoseFitDelay);
             LatestPrediction = prediction;
             Latest = animator.Update(prediction);
             Windows++;

@@ -95,20 +95,6 @@ namespace HeadGait
         /// </summary>
         public double PoseFitDelay => 0;
 
-        /// <summary>
-        /// The SVM's and BLSTM's phases come out early: cross-validated on five folds of the real recordings, their contacts
-        /// 21 and 26 ms before the labels' and their phase onsets 16 and 20 ms before (the same in a replay of their own
-        /// training recordings), as the paper's learned classifiers were early too. Moving their walking predictions back
-        /// 0 / 10 / 15 / 20 ms, file CV (classifier / avatar): SVM 15.1 / 13.7, 13.9 / 12.0, 13.3 / 11.9, 13.1 / 12.5 %;
-        /// BLSTM 15.6 / 13.9, 14.3 / 11.3, 13.5 / 10.9, 13.3 / 10.9 %; contacts (classifier) SVM -21, -8, +4, +4 ms,
-        /// BLSTM -26, -12, +5, +6 ms; step recall within 0.4 point. On the pose path, 15 ms back: SVM 18.5 / 15.8 to
-        /// 17.1 / 14.0 %, BLSTM 19.8 / 16.3 to 17.5 / 12.3 %. The same predictions moved by nothing score as before, so
-        /// the gain is the timing alone. Not measured leaving one style out (its fold models take an hour to train here).
-        /// </summary>
-        public const double DefaultPredictionLead = -0.015;
-
-        /// <summary>Seconds the pipeline moves walking predictions ahead (<see cref="DefaultPredictionLead"/>; 0 shows the classes as scored).</summary>
-        public double PredictionLead { get; set; } = DefaultPredictionLead;
         /// <summary>History read: the model's window, and what the walking gate reads.</summary>
         public int WindowLength => Math.Max(Features.Samples, Gate?.History ?? 0);
 
