@@ -97,17 +97,14 @@ namespace HeadGait
 
         /// <summary>
         /// Seconds later the contacts come out on acceleration fitted from tracked poses than on an accelerometer's, beyond
-        /// the fit's own lag (<see cref="IGaitClassifier.PoseFitDelay"/>): the fit over 120 ms blunts the heel strike, so
-        /// THR's threshold and COR's correlation peak are reached later on its rise. On the pose recordings, the fitted
-        /// SMV lies as far behind the accelerometer's as the fit's lag says (55.9 against 55.5 ms at 72 Hz, by
-        /// cross-correlation), but the contacts come out about 10 ms later. Leave-one-style-out on the pose recordings,
-        /// 0 / 5 / 10 / 15 / 20 / 25 ms: COR 25.5 / 24.9 / 24.7 / 24.9 / 25.3 / 26.2 % (the same order at 72, 90 and
-        /// 120 Hz; step recall 98.3 % throughout); file CV at 10 ms 22.3 to 21.2 %. THR 27.8 / 27.2 / 27.0 / 27.0 / 27.4 /
-        /// 28.0 %, but its step recall fell (the avatar's 96.1 / 95.8 / 94.8 / 94.7 / 94.5 %; file CV, the classifier's,
-        /// 96.7 to 94.4 % at 5 ms for 23.2 to 23.0 %), so THR keeps 0 (<see cref="ThresholdSettings.Clock"/>). The
-        /// accelerometer path does not use it.
+        /// the fit's own lag (<see cref="IGaitClassifier.PoseFitDelay"/>): the fit over 120 ms blunts the heel strike, so a
+        /// threshold or a correlation peak is reached later on its rise. On the pose recordings, the fitted SMV lies as far
+        /// behind the accelerometer's as the fit's lag says (55.9 against 55.5 ms at 72 Hz, by cross-correlation), but
+        /// THR's and COR's contacts come out about 10 ms later. The detectors set their own (COR 10 ms,
+        /// <see cref="CorrelationSettings.Clock"/>; THR 0, <see cref="ThresholdSettings.Clock"/>). The accelerometer path
+        /// does not use it.
         /// </summary>
-        public double PoseFitDelay = 0.01;
+        public double PoseFitDelay;
 
         public StepClockSettings Clone() => (StepClockSettings)MemberwiseClone();
     }
