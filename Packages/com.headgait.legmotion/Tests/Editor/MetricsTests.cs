@@ -183,6 +183,8 @@ namespace HeadGait.Tests
             Assert.That(double.Parse(thrAvatar[header.IndexOf("standing_as_walking")], System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(m.StandingAsWalking).Within(1e-6));
             Assert.That(int.Parse(thrAvatar[header.IndexOf("true_steps")]), Is.EqualTo(m.TrueSteps).And.GreaterThan(5));
             Assert.That(int.Parse(thrAvatar[header.IndexOf("predicted_steps")]), Is.EqualTo(m.PredictedSteps));
+            Assert.That(double.Parse(thrAvatar[header.IndexOf("step_timing_ms")], System.Globalization.CultureInfo.InvariantCulture),
+                Is.EqualTo(m.StepTimingMeanMs).Within(0.05).And.Not.EqualTo(0), "the matched contacts' mean timing, to 0.1 ms");
             Assert.That(lines[3], Does.StartWith("style,bn/act,slow,\"walk, \"\"quoted\"\"\",COR,clf,"), "a name with a comma or quote is quoted");
         }
     }
