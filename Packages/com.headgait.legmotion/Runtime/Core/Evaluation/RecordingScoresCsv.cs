@@ -6,9 +6,9 @@ namespace HeadGait
 {
     /// <summary>
     /// One CSV row per scored recording, classifier and output (classifier or avatar): which recordings fail, and how.
-    /// Written by <c>headgait benchmark --per-recording</c>; shares are fractions (0..1), counts are samples or steps, step timing the matched initial contacts' mean error in ms. The
-    /// variant says what was scored: the clip as recorded, changed as the benchmark's variants change it (ear-like, slow, ...),
-    /// or its head-pose recording through the pose path.
+    /// Written by <c>headgait benchmark --per-recording</c>; shares are fractions (0..1), counts are samples or steps, step
+    /// timing the matched initial contacts' mean error in ms. The variant says what was scored: the clip as recorded,
+    /// changed as the benchmark's variants change it (ear-like, slow, ...), or its head-pose recording through the pose path.
     /// </summary>
     public static class RecordingScoresCsv
     {
