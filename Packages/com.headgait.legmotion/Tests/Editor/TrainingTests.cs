@@ -403,6 +403,38 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AJoltedCopyRingsAtEachContactOverSensorNoise()
+        {
+            // A still head on an exact 100 Hz grid whose left foot lands at sample 300: swing before, stance after.
+            const int contact = 300;
+            var rows = new List<RecordedSample>();
+            for (int i = 0; i < 600; i++)
+                rows.Add(new RecordedSample(new ImuSample(i / 100.0, 0, 0, 9.81),
+                    i < contact ? GaitPhase.MidSwing : GaitPhase.InitialContact, GaitPhase.MidStance));
+            var still = new Recording("still", rows);
+            var jolted = RecordingAugmentation.Jolted(still);
+            Assert.That(jolted.Name, Is.EqualTo("still"));
+            Assert.That(jolted.Samples.Count, Is.EqualTo(rows.Count));
+            double Rise(int i) => jolted.Samples[i].Imu.Z - 9.81;
+            // The jolt peaks at the contact, vertical and half as much forward, and has rung out 0.1 s later.
+            Assert.That(Rise(contact), Is.EqualTo(RecordingAugmentation.JoltPeak).Within(5 * RecordingAugmentation.JoltNoise));
+            Assert.That(jolted.Samples[contact].Imu.X, Is.EqualTo(RecordingAugmentation.JoltForwardShare * RecordingAugmentation.JoltPeak).Within(5 * RecordingAugmentation.JoltNoise));
+            // Before the contact only noise, of the stated SD on every axis.
+            double sum = 0;
+            int count = 0;
+            for (int i = 0; i < contact; i++, count += 3)
+            {
+                var a = jolted.Samples[i].Imu;
+                sum += a.X * a.X + a.Y * a.Y + Rise(i) * Rise(i);
+            }
+            Assert.That(Math.Sqrt(sum / count), Is.EqualTo(RecordingAugmentation.JoltNoise).Within(0.01));
+            Assert.That(Math.Abs(Rise(contact + 10)), Is.LessThan(5 * RecordingAugmentation.JoltNoise));
+            Assert.That(jolted.Samples[contact].Left, Is.EqualTo(GaitPhase.InitialContact));
+            // Seeded by the name: the same clip is jolted the same way in every fold.
+            Assert.That(RecordingAugmentation.Jolted(still).Samples[5].Imu.Y, Is.EqualTo(jolted.Samples[5].Imu.Y));
+        }
+
+        [Test]
         public void StretchesTimeWithTheLabelsAndScalesOnlyTheDynamicPart()
         {
             var rec = TestData.Eval("walk_straight");
