@@ -99,6 +99,26 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AccelerationInGOrWithGravityRemovedIsAClearError()
+        {
+            var walk = TestData.Eval("walk_straight");
+            string Saved(Func<ImuSample, ImuSample> map)
+            {
+                var copy = new Recording("walk", walk.Samples.ConvertAll(s => new RecordedSample(map(s.Imu), s.Left, s.Right)));
+                var text = new StringWriter();
+                RecordingCsv.Write(copy, text);
+                return text.ToString();
+            }
+            Assert.That(RecordingCsv.Parse(Saved(a => a), "walk").Samples.Count, Is.EqualTo(walk.Samples.Count));
+            const double g = 9.80665;
+            var inG = Assert.Throws<RecordingFormatException>(() => RecordingCsv.Parse(Saved(a => new ImuSample(a.Time, a.X / g, a.Y / g, a.Z / g)), "walk"));
+            Assert.That(inG.Message, Does.StartWith("walk:").And.Contain("units of g"));
+            var linear = Assert.Throws<RecordingFormatException>(() => RecordingCsv.Parse(Saved(a => new ImuSample(a.Time, a.X, a.Y, a.Z - g)), "walk"));
+            Assert.That(linear.Message, Does.Contain("gravity removed"));
+            Assert.That(linear.Line, Is.EqualTo(3), "the first data row, after the magic line and the header");
+        }
+
+        [Test]
         public void CommittedSamplesAreReadable()
         {
             foreach (var e in SampleLibrary.All)

@@ -31,6 +31,15 @@ namespace HeadGait
         /// <summary>Largest acceleration magnitude per axis read (m/s^2): 100 g, far beyond any head.</summary>
         public const double MaxAcceleration = 1000;
 
+        /// <summary>
+        /// Range the median acceleration magnitude of a recording must lie in (m/s^2): the format holds specific force, about
+        /// g for a head at any pace. Below it the file is in units of g or has gravity removed, above it in other units.
+        /// </summary>
+        public const double MinMedianMagnitude = 5, MaxMedianMagnitude = 20;
+
+        /// <summary>Rows needed before the median magnitude is judged (a few rows can be anything).</summary>
+        const int MagnitudeCheckRows = 20;
+
         public static Recording Load(string path, bool strict = false)
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
@@ -65,9 +74,30 @@ namespace HeadGait
                     var imu = new ImuSample(v[0], v[1], v[2], v[3]);
                     samples.Add(left.HasValue ? new RecordedSample(imu, left.Value, right.Value, line) : new RecordedSample(imu, line));
                 });
+            CheckUnits(samples, name);
             var rec = new Recording(name, samples, table.Warnings);
             foreach (var kv in table.Metadata) rec.Metadata[kv.Key] = kv.Value;
             return rec;
+        }
+
+        /// <summary>Throws when the rows' median magnitude says they are not m/s^2 of specific force (see <see cref="MinMedianMagnitude"/>).</summary>
+        static void CheckUnits(List<RecordedSample> samples, string name)
+        {
+            if (samples.Count < MagnitudeCheckRows) return;
+            var magnitudes = new double[samples.Count];
+            for (int i = 0; i < magnitudes.Length; i++)
+            {
+                var a = samples[i].Imu;
+                magnitudes[i] = Math.Sqrt(a.X * a.X + a.Y * a.Y + a.Z * a.Z);
+            }
+            Array.Sort(magnitudes);
+            double median = magnitudes[magnitudes.Length / 2];
+            if (median >= MinMedianMagnitude && median <= MaxMedianMagnitude) return;
+            string cause = median >= 0.5 && median <= 2 ? "they look like units of g (multiply by 9.80665)"
+                : median < MinMedianMagnitude ? "they look like linear acceleration with gravity removed (the format wants the accelerometer's reading, gravity included)"
+                : "they look like another unit";
+            throw new RecordingFormatException(name, samples[0].Line, string.Format(CultureInfo.InvariantCulture,
+                "acc_x/acc_y/acc_z have a median magnitude of {0:F2} where a head's accelerometer reads about 9.81 m/s^2: {1}", median, cause));
         }
 
         public static void Save(Recording recording, string path)
