@@ -30,17 +30,18 @@ namespace HeadGait.Cli
             var tilted = new Option<bool>("--tilted") { Description = $"also score each held-out clip as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees would give it (a headset worn tilted, a head held looking down)" };
             var turned = new Option<bool>("--turned") { Description = $"also score each held-out clip as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks would give it (looking around while walking)" };
             var jolted = new Option<bool>("--jolted") { Description = $"also score each held-out clip with a {RecordingAugmentation.JoltHz:F0} Hz jolt of {RecordingAugmentation.JoltPeak} m/s^2 at every initial contact and {RecordingAugmentation.JoltNoise} m/s^2 noise: content above the mocap's 12 Hz that a real head-worn sensor has (made-up sizes)" };
+            var sensorRate = new Option<double?>("--sensor-rate") { Description = "also score each held-out clip as a sensor sampling at this many Hz gives it (e.g. 50: the preprocessor resamples it to 100 Hz)" };
             var startStop = new Option<bool>("--start-stop") { Description = "also score each held-out walking clip made into a walk that starts and stops (standing, the walk growing in from a toe-off and fading out to a contact, standing): how late each classifier starts and stops on people's steps" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, startStop,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, sensorRate, startStop,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(jolted), parse.GetValue(startStop)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(jolted), parse.GetValue(sensorRate), parse.GetValue(startStop)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool jolted, bool startStop)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool jolted, double? sensorRate, bool startStop)
         {
             // Held-out clips changed as a real sensor or walk might differ from these recordings: each is scored by the same fold's classifiers.
             var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
@@ -49,6 +50,13 @@ namespace HeadGait.Cli
             if (turned) variants.Add(("turned", $"as a head turned {RecordingAugmentation.TurnedYawDegrees:F0} degrees to the left of where it walks gives them", r => RecordingAugmentation.Turned(r)));
             if (tilted) variants.Add(("tilted", $"as a sensor pitched {RecordingAugmentation.TiltedPitchDegrees:F0} degrees down and rolled {RecordingAugmentation.TiltedRollDegrees:F0} degrees gives them", r => RecordingAugmentation.Tilted(r)));
             if (jolted) variants.Add(("jolted", $"with a {RecordingAugmentation.JoltHz:F0} Hz jolt at each contact and sensor noise (content above 12 Hz)", RecordingAugmentation.Jolted));
+            if (sensorRate.HasValue)
+            {
+                if (!(sensorRate > 0) || double.IsInfinity(sensorRate.Value)) throw new UsageException("--sensor-rate must be a positive number of Hz");
+                double rate = sensorRate.Value;
+                string hz = rate.ToString("0.#", System.Globalization.CultureInfo.InvariantCulture) + " Hz";
+                variants.Add((hz, $"as a sensor sampling at {hz} gives them", r => RecordingAugmentation.AtRate(r, rate)));
+            }
             // Seeded by the clip's name, so every fold and classifier scores the same made-up starts and stops.
             if (startStop) variants.Add(("start-stop", "made into walks that start and stop (walking clips only)",
                 r => RecordingAugmentation.StartingAndStopping(r, new DeterministicRandom(DeterministicRandom.SeedFrom(r.Name)))));

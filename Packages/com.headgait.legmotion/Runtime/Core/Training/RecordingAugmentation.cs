@@ -184,6 +184,19 @@ namespace HeadGait.Training
             return result;
         }
 
+        /// <summary>
+        /// The recording as a sensor sampling at <paramref name="rate"/> Hz would give it (the benchmark's <c>--sensor-rate</c>):
+        /// the acceleration interpolated at that rate, labels held from the last row, the preprocessor then resampling it
+        /// back to 100 Hz as it does a real sensor's stream. Same name.
+        /// </summary>
+        public static Recording AtRate(Recording source, double rate)
+        {
+            if (!(rate > 0) || double.IsInfinity(rate)) throw new ArgumentOutOfRangeException(nameof(rate), "the sensor rate must be a positive number of Hz");
+            var result = new Recording(source.Name, Resampled(source, rate));
+            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
+            return result;
+        }
+
         /// <summary>Ranges of <see cref="StartingAndStopping"/>'s made-up starts and stops.</summary>
         public sealed class StartStopSettings
         {
@@ -325,7 +338,10 @@ namespace HeadGait.Training
         }
 
         /// <summary>The recording on an exact 100 Hz grid: linear interpolation of the acceleration, labels held from the last row.</summary>
-        public static List<RecordedSample> Uniform(Recording source)
+        public static List<RecordedSample> Uniform(Recording source) => Resampled(source, Rate);
+
+        /// <summary>The recording on an exact grid of <paramref name="rate"/> Hz: linear interpolation of the acceleration, labels held from the last row.</summary>
+        static List<RecordedSample> Resampled(Recording source, double rate)
         {
             var rows = new List<RecordedSample>();
             foreach (var r in source.Samples)
@@ -337,9 +353,9 @@ namespace HeadGait.Training
             if (rows.Count < 2) return grid;
             double t0 = rows[0].Imu.Time, t1 = rows[rows.Count - 1].Imu.Time;
             int j = 0;
-            for (int k = 0; t0 + k / Rate <= t1 + 1e-9; k++)
+            for (int k = 0; t0 + k / rate <= t1 + 1e-9; k++)
             {
-                double t = t0 + k / Rate;
+                double t = t0 + k / rate;
                 while (j + 2 < rows.Count && rows[j + 1].Imu.Time <= t) j++;
                 var p = rows[j];
                 var q = rows[j + 1];
