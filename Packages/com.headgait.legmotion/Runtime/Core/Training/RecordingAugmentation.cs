@@ -179,9 +179,7 @@ namespace HeadGait.Training
                     a.Z + jolt[i] + JoltNoise * random.NextGaussian());
                 output.Add(rows[i].HasTruth ? new RecordedSample(imu, rows[i].Left, rows[i].Right) : new RecordedSample(imu));
             }
-            var result = new Recording(source.Name, output);
-            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
-            return result;
+            return Derived(source, source.Name, output);
         }
 
         /// <summary>
@@ -192,9 +190,7 @@ namespace HeadGait.Training
         public static Recording AtRate(Recording source, double rate)
         {
             if (!(rate > 0) || double.IsInfinity(rate)) throw new ArgumentOutOfRangeException(nameof(rate), "the sensor rate must be a positive number of Hz");
-            var result = new Recording(source.Name, Resampled(source, rate));
-            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
-            return result;
+            return Derived(source, source.Name, Resampled(source, rate));
         }
 
         /// <summary>Ranges of <see cref="StartingAndStopping"/>'s made-up starts and stops.</summary>
@@ -277,13 +273,19 @@ namespace HeadGait.Training
                 output.Add(new RecordedSample(new ImuSample(t0 + output.Count / Rate, v[0], v[1], v[2]), rows[i].Left, rows[i].Right));
             }
             for (int j = 0; j < after; j++) Standing(last);
-            var result = new Recording(source.Name + (IsCopy(source.Name) ? "" : CopyMark.ToString())
+            return Derived(source, source.Name + (IsCopy(source.Name) ? "" : CopyMark.ToString())
                 + string.Format(System.Globalization.CultureInfo.InvariantCulture, "startstop{0:F1}s", walkSeconds), output);
-            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
-            return result;
         }
 
         static double SmoothStep(double x) => x <= 0 ? 0 : x >= 1 ? 1 : x * x * (3 - 2 * x);
+
+        /// <summary>A recording made from <paramref name="source"/>: the given name and samples, the source's metadata.</summary>
+        static Recording Derived(Recording source, string name, List<RecordedSample> samples)
+        {
+            var result = new Recording(name, samples);
+            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
+            return result;
+        }
 
         /// <summary>A copy with every sample's acceleration mapped; labels, lines, name and metadata kept.</summary>
         static Recording MapSamples(Recording source, Func<ImuSample, ImuSample> map)
@@ -294,9 +296,7 @@ namespace HeadGait.Training
                 var imu = map(s.Imu);
                 output.Add(s.HasTruth ? new RecordedSample(imu, s.Left, s.Right, s.Line) : new RecordedSample(imu, s.Line));
             }
-            var result = new Recording(source.Name, output);
-            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
-            return result;
+            return Derived(source, source.Name, output);
         }
 
         /// <summary>
@@ -332,9 +332,7 @@ namespace HeadGait.Training
                 var label = rows[a < 1 ? i : i + 1];
                 output.Add(label.HasTruth ? new RecordedSample(imu, label.Left, label.Right) : new RecordedSample(imu));
             }
-            var result = new Recording(name, output);
-            foreach (var kv in source.Metadata) result.Metadata[kv.Key] = kv.Value;
-            return result;
+            return Derived(source, name, output);
         }
 
         /// <summary>The recording on an exact 100 Hz grid: linear interpolation of the acceleration, labels held from the last row.</summary>
