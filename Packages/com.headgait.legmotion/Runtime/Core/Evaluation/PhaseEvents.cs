@@ -173,7 +173,7 @@ namespace HeadGait
                 if (!a.IsFinite || !(a.Time > last)) continue;
                 last = a.Time;
                 tl.Add(a.Time);
-                sl.Add(Math.Sqrt(a.X * a.X + a.Y * a.Y + a.Z * a.Z) - gravity);
+                sl.Add(a.Magnitude - gravity);
                 ll.Add(a.Y);
             }
             t = tl.ToArray();

@@ -85,11 +85,7 @@ namespace HeadGait
         {
             if (samples.Count < MagnitudeCheckRows) return;
             var magnitudes = new double[samples.Count];
-            for (int i = 0; i < magnitudes.Length; i++)
-            {
-                var a = samples[i].Imu;
-                magnitudes[i] = Math.Sqrt(a.X * a.X + a.Y * a.Y + a.Z * a.Z);
-            }
+            for (int i = 0; i < magnitudes.Length; i++) magnitudes[i] = samples[i].Imu.Magnitude;
             Array.Sort(magnitudes);
             double median = magnitudes[magnitudes.Length / 2];
             if (median >= MinMedianMagnitude && median <= MaxMedianMagnitude) return;

@@ -1,3 +1,5 @@
+using System;
+
 namespace HeadGait
 {
     /// <summary>
@@ -19,6 +21,9 @@ namespace HeadGait
             Y = y;
             Z = z;
         }
+
+        /// <summary>Length of the specific force (m/s^2): about g at rest, whatever the head's tilt.</summary>
+        public double Magnitude => Math.Sqrt(X * X + Y * Y + Z * Z);
 
         public bool IsFinite => IsFiniteNumber(Time) && IsFiniteNumber(X) && IsFiniteNumber(Y) && IsFiniteNumber(Z);
 

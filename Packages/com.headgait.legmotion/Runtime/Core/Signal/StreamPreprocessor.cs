@@ -145,7 +145,7 @@ namespace HeadGait
             gridIndex = 0;
         }
 
-        public double Smv(in ImuSample s) => Math.Sqrt(s.X * s.X + s.Y * s.Y + s.Z * s.Z) - settings.Gravity;
+        public double Smv(in ImuSample s) => s.Magnitude - settings.Gravity;
 
         /// <summary>Feeds one input sample; <paramref name="onWindow"/> is called for every full window it completes.</summary>
         public SampleOutcome Push(in ImuSample sample, Action<SignalWindow> onWindow)
@@ -155,7 +155,7 @@ namespace HeadGait
                 SkippedNotFinite++;
                 return SampleOutcome.SkippedNotFinite;
             }
-            double mag = Math.Sqrt(sample.X * sample.X + sample.Y * sample.Y + sample.Z * sample.Z);
+            double mag = sample.Magnitude;
             if (mag > settings.MaxMagnitude)
             {
                 SkippedImplausible++;
