@@ -59,6 +59,10 @@ namespace HeadGait.Cli
                 }
                 results[name] = list;
             }
+            // Every classifier sees the same samples, so the clock policy's account is the same for all: print it once.
+            foreach (var r in results[names[0]].Where(r => r.SkipSummary.Length > 0))
+                Console.WriteLine($"{r.Recording}: the clock policy {r.SkipSummary}");
+            if (results[names[0]].Any(r => r.SkipSummary.Length > 0)) Console.WriteLine();
             bool labelled = recordings.Any(r => r.HasTruth);
             if (labelled)
             {

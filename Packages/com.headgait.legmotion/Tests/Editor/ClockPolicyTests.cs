@@ -82,5 +82,21 @@ namespace HeadGait.Tests
             Assert.That(pre.SkippedSuspectTime, Is.EqualTo(1));
             Assert.That(pre.Rebases, Is.EqualTo(0));
         }
+
+        [Test]
+        public void WhatThePolicySkippedIsDescribedByReason()
+        {
+            var pre = new StreamPreprocessor();
+            Assert.That(pre.DescribeSkips(), Is.Empty, "a fresh stream has skipped nothing");
+            pre.Push(new ImuSample(10.00, 0, 0, 9.8), null);
+            pre.Push(new ImuSample(10.01, 0, 0, 9.8), null);
+            pre.Push(new ImuSample(9.95, 0, 0, 9.8), null);
+            pre.Push(new ImuSample(9.96, 0, 0, 9.8), null);
+            pre.Push(new ImuSample(10.01, 0, 0, 9.8), null);
+            pre.Push(new ImuSample(10.02, double.NaN, 0, 9.8), null);
+            pre.Push(new ImuSample(10.50, 0, 0, 9.8), null);
+            Assert.That(pre.DescribeSkips(),
+                Is.EqualTo("skipped 4 sample(s): 2 out of time order, 1 with a repeated time, 1 not finite; 1 hole(s), 0 clock re-base(s)"));
+        }
     }
 }

@@ -33,6 +33,27 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AFileThatCannotBeReadIsNamedByItsPath()
+        {
+            string path = Path.Combine(Path.GetTempPath(), $"headgait-bad-{Guid.NewGuid():N}.csv");
+            try
+            {
+                File.WriteAllText(path, "timestamp_s,acc_x,acc_y,acc_z\n0.00,0,0,9.8\n0.01,zero,0,9.8\n");
+                var e = Assert.Throws<RecordingFormatException>(() => RecordingCsv.Load(path, strict: true));
+                Assert.That(e.FileName, Is.EqualTo(path));
+                Assert.That(e.Message, Does.StartWith(path + ":3:").And.Contain("acc_x"));
+                Assert.That(RecordingCsv.Load(path).Name, Is.EqualTo(Path.GetFileNameWithoutExtension(path)), "the recording keeps its short name");
+                File.WriteAllText(path, "# headgait-pose v1\ntimestamp_s,pos_x,pos_y\n0,0,1.6\n");
+                var pose = Assert.Throws<RecordingFormatException>(() => PoseCsv.ToAcceleration(path));
+                Assert.That(pose.Message, Does.StartWith(path + ":2:").And.Contain("pos_z"));
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
+
+        [Test]
         public void HalfOfTheGroundTruthIsAnError()
         {
             Assert.Throws<RecordingFormatException>(() => RecordingCsv.Parse("timestamp_s,acc_x,acc_y,acc_z,phase_left\n0,1,2,3,IC\n"));

@@ -12,6 +12,8 @@ namespace HeadGait
         public int InputSamples;
         public int SkippedSamples;
         public int Gaps;
+        /// <summary>The clock policy's account of what it skipped (<see cref="StreamPreprocessor.DescribeSkips"/>); empty when nothing.</summary>
+        public string SkipSummary = "";
         public int FileWarnings;
         public long Windows;
         /// <summary>Mean and 95th-percentile classifier time per window (ms).</summary>
@@ -78,6 +80,7 @@ namespace HeadGait
                 InputSamples = recording.Samples.Count,
                 SkippedSamples = pipeline.Preprocessor.Skipped,
                 Gaps = pipeline.Preprocessor.Gaps,
+                SkipSummary = pipeline.Preprocessor.DescribeSkips(),
                 FileWarnings = recording.Warnings.Count,
                 Windows = pipeline.Windows,
                 MeanSampleMs = recording.Samples.Count > 0 ? total.Elapsed.TotalMilliseconds / recording.Samples.Count : 0,

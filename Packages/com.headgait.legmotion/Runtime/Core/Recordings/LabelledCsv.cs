@@ -23,9 +23,10 @@ namespace HeadGait
         /// <summary>
         /// Reads the rows, calling <paramref name="row"/> with each good one's values (in <paramref name="required"/> order),
         /// its 1-based line and its labels (null without labels). A missing header or column throws
-        /// <see cref="RecordingFormatException"/>; a bad row throws in strict mode and is skipped with a warning otherwise.
+        /// <see cref="RecordingFormatException"/> naming <paramref name="source"/> (the file); a bad row throws in strict mode
+        /// and is skipped with a warning otherwise.
         /// </summary>
-        public static Result Read(TextReader reader, string name, bool strict, string[] required, double[] limits, string[] units,
+        public static Result Read(TextReader reader, string source, bool strict, string[] required, double[] limits, string[] units,
             Action<double[], int, GaitPhase?, GaitPhase?> row)
         {
             var result = new Result();
@@ -53,13 +54,13 @@ namespace HeadGait
                 string[] cells = trimmed.Split(',');
                 if (idx == null)
                 {
-                    ParseHeader(cells, name, lineNo, required, out idx, out tl, out tr);
+                    ParseHeader(cells, source, lineNo, required, out idx, out tl, out tr);
                     columnCount = cells.Length;
                     continue;
                 }
                 if (cells.Length != columnCount)
                 {
-                    Bad(strict, result.Warnings, name, lineNo, $"expected {columnCount} cells, found {cells.Length}");
+                    Bad(strict, result.Warnings, source, lineNo, $"expected {columnCount} cells, found {cells.Length}");
                     continue;
                 }
                 string error = null;
@@ -73,7 +74,7 @@ namespace HeadGait
                 }
                 if (error != null)
                 {
-                    Bad(strict, result.Warnings, name, lineNo, error);
+                    Bad(strict, result.Warnings, source, lineNo, error);
                     continue;
                 }
                 if (tl < 0)
@@ -89,29 +90,29 @@ namespace HeadGait
                 }
                 if (!GaitPhases.TryParse(l, out var pl) || !GaitPhases.TryParse(r, out var pr))
                 {
-                    Bad(strict, result.Warnings, name, lineNo, $"unknown phase label '{Shorten(l)}' / '{Shorten(r)}'");
+                    Bad(strict, result.Warnings, source, lineNo, $"unknown phase label '{Shorten(l)}' / '{Shorten(r)}'");
                     continue;
                 }
                 if ((pl == GaitPhase.Standing) != (pr == GaitPhase.Standing))
                 {
-                    Bad(strict, result.Warnings, name, lineNo, "one foot is labelled STAND and the other walking");
+                    Bad(strict, result.Warnings, source, lineNo, "one foot is labelled STAND and the other walking");
                     continue;
                 }
                 row(v, lineNo, pl, pr);
             }
             if (idx == null)
-                throw new RecordingFormatException(name, Math.Max(lineNo, 1), $"no header line (expected {string.Join(",", required)}[,phase_left,phase_right])");
+                throw new RecordingFormatException(source, Math.Max(lineNo, 1), $"no header line (expected {string.Join(",", required)}[,phase_left,phase_right])");
             return result;
         }
 
-        static void ParseHeader(string[] cells, string name, int lineNo, string[] required, out int[] idx, out int tl, out int tr)
+        static void ParseHeader(string[] cells, string source, int lineNo, string[] required, out int[] idx, out int tl, out int tr)
         {
             var names = new Dictionary<string, int>(StringComparer.OrdinalIgnoreCase);
             for (int i = 0; i < cells.Length; i++)
             {
                 string c = cells[i].Trim();
                 if (c.Length == 0) continue;
-                if (names.ContainsKey(c)) throw new RecordingFormatException(name, lineNo, $"column '{Shorten(c)}' appears twice");
+                if (names.ContainsKey(c)) throw new RecordingFormatException(source, lineNo, $"column '{Shorten(c)}' appears twice");
                 names[c] = i;
             }
             idx = new int[required.Length];
@@ -119,17 +120,17 @@ namespace HeadGait
             for (int c = 0; c < required.Length; c++)
                 if (!names.TryGetValue(required[c], out idx[c])) missing.Add(required[c]);
             if (missing.Count > 0)
-                throw new RecordingFormatException(name, lineNo,
+                throw new RecordingFormatException(source, lineNo,
                     $"missing column(s) {string.Join(", ", missing)}; header must name {string.Join(",", required)} (found: {Shorten(string.Join(",", cells))})");
             bool hasL = names.TryGetValue(TruthColumns[0], out tl);
             bool hasR = names.TryGetValue(TruthColumns[1], out tr);
-            if (hasL != hasR) throw new RecordingFormatException(name, lineNo, "ground truth needs both phase_left and phase_right");
+            if (hasL != hasR) throw new RecordingFormatException(source, lineNo, "ground truth needs both phase_left and phase_right");
             if (!hasL) tl = tr = -1;
         }
 
-        static void Bad(bool strict, List<string> warnings, string name, int lineNo, string message)
+        static void Bad(bool strict, List<string> warnings, string source, int lineNo, string message)
         {
-            if (strict) throw new RecordingFormatException(name, lineNo, message);
+            if (strict) throw new RecordingFormatException(source, lineNo, message);
             warnings.Add($"line {lineNo}: {message} (row skipped)");
         }
 

@@ -82,7 +82,7 @@ namespace HeadGait
             {
                 var limits = new[] { RecordingCsv.MaxTimestamp, MaxPosition, MaxPosition, MaxPosition, 2, 2, 2, 2 };
                 var units = new[] { "s", "m", "m", "m", "", "", "", "" };
-                var table = LabelledCsv.Read(reader, Path.GetFileNameWithoutExtension(path), strict, RequiredColumns, limits, units,
+                var table = LabelledCsv.Read(reader, path, strict, RequiredColumns, limits, units,
                     (v, line, l, r) => rows.Add((new PoseSample(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), l, r, line)));
                 warnings = table.Warnings;
             }

@@ -75,17 +75,18 @@ namespace HeadGait
         public double Duration => Samples.Count < 2 ? 0 : Samples[Samples.Count - 1].Imu.Time - Samples[0].Imu.Time;
     }
 
-    /// <summary>A recording file that cannot be read; carries the 1-based line it failed on.</summary>
+    /// <summary>A recording file that cannot be read; carries the file and the 1-based line it failed on.</summary>
     public sealed class RecordingFormatException : Exception
     {
         public RecordingFormatException(string source, int line, string message)
             : base($"{source}:{line}: {message}")
         {
-            RecordingName = source;
+            FileName = source;
             Line = line;
         }
 
-        public string RecordingName { get; }
+        /// <summary>The file's path as it was given, or the recording's name for text that came from no file.</summary>
+        public string FileName { get; }
         public int Line { get; }
     }
 }

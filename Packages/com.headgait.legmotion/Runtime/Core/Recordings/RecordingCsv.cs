@@ -46,7 +46,7 @@ namespace HeadGait
             if (!File.Exists(path)) throw new FileNotFoundException($"Recording not found: {path}", path);
             using (var reader = new StreamReader(path, Encoding.UTF8))
             {
-                return Read(reader, Path.GetFileNameWithoutExtension(path), strict);
+                return Read(reader, Path.GetFileNameWithoutExtension(path), strict, path);
             }
         }
 
@@ -63,25 +63,27 @@ namespace HeadGait
         /// column without the other) always throws <see cref="RecordingFormatException"/>. Bad rows (wrong
         /// cell count, unparsable or non-finite numbers, unknown phase names) throw in strict mode; otherwise
         /// they are skipped and listed in <see cref="Recording.Warnings"/>. Timestamps are not reordered here:
-        /// the preprocessor skips out-of-order samples when the stream is replayed.
+        /// the preprocessor skips out-of-order samples when the stream is replayed. Errors name <paramref name="source"/>
+        /// (the file's path), or the recording's name where there is none.
         /// </summary>
-        public static Recording Read(TextReader reader, string name, bool strict = false)
+        public static Recording Read(TextReader reader, string name, bool strict = false, string source = null)
         {
+            source = source ?? name;
             var samples = new List<RecordedSample>();
-            var table = LabelledCsv.Read(reader, name, strict, RequiredColumns, new[] { MaxTimestamp, MaxAcceleration, MaxAcceleration, MaxAcceleration },
+            var table = LabelledCsv.Read(reader, source, strict, RequiredColumns, new[] { MaxTimestamp, MaxAcceleration, MaxAcceleration, MaxAcceleration },
                 new[] { "s", "m/s^2", "m/s^2", "m/s^2" }, (v, line, left, right) =>
                 {
                     var imu = new ImuSample(v[0], v[1], v[2], v[3]);
                     samples.Add(left.HasValue ? new RecordedSample(imu, left.Value, right.Value, line) : new RecordedSample(imu, line));
                 });
-            CheckUnits(samples, name);
+            CheckUnits(samples, source);
             var rec = new Recording(name, samples, table.Warnings);
             foreach (var kv in table.Metadata) rec.Metadata[kv.Key] = kv.Value;
             return rec;
         }
 
         /// <summary>Throws when the rows' median magnitude says they are not m/s^2 of specific force (see <see cref="MinMedianMagnitude"/>).</summary>
-        static void CheckUnits(List<RecordedSample> samples, string name)
+        static void CheckUnits(List<RecordedSample> samples, string source)
         {
             if (samples.Count < MagnitudeCheckRows) return;
             var magnitudes = new double[samples.Count];
@@ -92,7 +94,7 @@ namespace HeadGait
             string cause = median >= 0.5 && median <= 2 ? "they look like units of g (multiply by 9.80665)"
                 : median < MinMedianMagnitude ? "they look like linear acceleration with gravity removed (the format wants the accelerometer's reading, gravity included)"
                 : "they look like another unit";
-            throw new RecordingFormatException(name, samples[0].Line, string.Format(CultureInfo.InvariantCulture,
+            throw new RecordingFormatException(source, samples[0].Line, string.Format(CultureInfo.InvariantCulture,
                 "acc_x/acc_y/acc_z have a median magnitude of {0:F2} where a head's accelerometer reads about 9.81 m/s^2: {1}", median, cause));
         }
 

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace HeadGait
 {
@@ -136,6 +137,24 @@ namespace HeadGait
         public long Produced => produced;
 
         public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible + SkippedSuspectTime;
+
+        /// <summary>
+        /// What the clock policy skipped and why, for a person reading a replay ("12 out of time order, 1 not finite"), with
+        /// the holes and re-bases it met; empty when it took every sample.
+        /// </summary>
+        public string DescribeSkips()
+        {
+            var parts = new List<string>();
+            void Add(int count, string what) { if (count > 0) parts.Add($"{count} {what}"); }
+            Add(SkippedOutOfOrder, "out of time order");
+            Add(SkippedDuplicateTime, "with a repeated time");
+            Add(SkippedSuspectTime, "far off the stream's clock (a jump no later sample followed)");
+            Add(SkippedNotFinite, "not finite");
+            Add(SkippedImplausible, $"beyond {settings.MaxMagnitude:0} m/s^2");
+            string skipped = parts.Count > 0 ? $"skipped {Skipped} sample(s): {string.Join(", ", parts)}" : "";
+            string holes = Gaps > 0 || Rebases > 0 ? $"{Gaps} hole(s), {Rebases} clock re-base(s)" : "";
+            return skipped.Length > 0 && holes.Length > 0 ? skipped + "; " + holes : skipped + holes;
+        }
 
         public void Reset()
         {
