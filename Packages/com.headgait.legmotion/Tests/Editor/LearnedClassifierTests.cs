@@ -85,6 +85,75 @@ namespace HeadGait.Tests
             Assert.That(firstFollowing - 150, Is.LessThan(30), "held for at most a few segments (0.3 s)");
         }
 
+        /// <summary>
+        /// What the BLSTM shows over 2 s of confident walking scores (the segments in order at a 1.1 s stride) and then 1 s
+        /// of standing at <paramref name="standing"/> (the walk's next segment second, as a network's runner-up), the gate
+        /// saying <paramref name="gate"/> throughout.
+        /// </summary>
+        static List<GaitPrediction> WalkThenStanding(BlstmClassifier blstm, GateVerdict gate, double standing)
+        {
+            int n = blstm.Segments.Count, classes = blstm.Segments.ClassCount;
+            var scores = new double[300 * classes];
+            for (int i = 0; i < 300; i++)
+            {
+                int walking = (int)(i / 110.0 * n) % n;
+                for (int c = 0; c < classes; c++) scores[i * classes + c] = 0.001 / (classes - 2);
+                if (i < 200) scores[i * classes + walking] = 0.999;
+                else
+                {
+                    scores[i * classes + blstm.Segments.StandingClass] = standing;
+                    scores[i * classes + walking] = 0.999 - standing;
+                }
+            }
+            var shown = new List<GaitPrediction>();
+            for (int i = 0; i < 300; i++)
+                shown.Add(blstm.ClassifyScored(scores, i, 0.01 * i, 100, i < 200 ? GateVerdict.Passes : gate));
+            return shown;
+        }
+
+        [Test]
+        public void AWindowTheGateIsSureIsWalkingDoesNotEndAWalkButStartsNone()
+        {
+            var settings = new PhaseFilterSettings();
+            Assert.That(settings.SureWalkingLogOdds, Is.EqualTo(5), "over 99 % sure");
+            var passed = WalkThenStanding(Blstm(Models), GateVerdict.Passes, 0.95);
+            var sure = WalkThenStanding(Blstm(Models), GateVerdict.SurelyWalking, 0.95);
+            Assert.That(passed[199].IsWalking && sure[199].IsWalking, Is.True, "walking before the model's scores turn");
+            Assert.That(passed.GetRange(250, 50).TrueForAll(p => !p.IsWalking), Is.True, "where the gate only passes, the model ends the walk");
+            Assert.That(sure.GetRange(200, 100).TrueForAll(p => p.IsWalking), Is.True, "where the gate is sure, a 95 % standing does not");
+            var certain = WalkThenStanding(Blstm(Models), GateVerdict.SurelyWalking, 0.998);
+            Assert.That(certain.GetRange(250, 50).TrueForAll(p => !p.IsWalking), Is.True, "a model all but certain of standing still ends it");
+            var standing = new BlstmClassifier(GaitModels.Load(Models).Blstm);
+            int classes = standing.Segments.ClassCount;
+            var still = new double[classes];
+            still[standing.Segments.StandingClass] = 0.99;
+            for (int i = 0; i < 100; i++)
+                Assert.That(standing.ClassifyScored(still, 0, 0.01 * i, 100, GateVerdict.SurelyWalking).IsWalking, Is.False, "the gate alone starts no walk");
+        }
+
+        [Test]
+        public void TheGateVerdictFollowsItsLogOdds()
+        {
+            var rec = TestData.Eval("walk_straight");
+            var blstm = Blstm(Models);
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = blstm.WindowLength });
+            var verdicts = new List<(GateVerdict verdict, double logOdds)>();
+            foreach (var s in rec.Samples) pre.Push(s.Imu, w => verdicts.Add((blstm.JudgeGate(w), blstm.Gate.Score(w))));
+            Assert.That(verdicts.Exists(v => v.verdict == GateVerdict.SurelyWalking), Is.True, "the generated walk has windows the gate is sure of");
+            foreach (var (verdict, logOdds) in verdicts)
+            {
+                if (logOdds >= 5) Assert.That(verdict, Is.EqualTo(GateVerdict.SurelyWalking));
+                else if (logOdds > 0) Assert.That(verdict, Is.EqualTo(GateVerdict.Passes));
+                else Assert.That(verdict, Is.Not.EqualTo(GateVerdict.SurelyWalking));
+            }
+            var off = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SureWalkingLogOdds = double.PositiveInfinity });
+            pre.Reset();
+            foreach (var s in rec.Samples) pre.Push(s.Imu, w => Assert.That(off.JudgeGate(w), Is.Not.EqualTo(GateVerdict.SurelyWalking), "turned off"));
+            blstm.Gate = null;
+            pre.Reset();
+            foreach (var s in rec.Samples) pre.Push(s.Imu, w => Assert.That(blstm.JudgeGate(w), Is.EqualTo(GateVerdict.Passes), "no gate: the model decides"));
+        }
+
         [Test]
         public void TheSvmsHalfWeightEvidenceBreaksGeneratedWalksApartLessOften()
         {

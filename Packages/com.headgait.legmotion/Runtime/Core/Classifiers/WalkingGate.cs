@@ -120,7 +120,14 @@ namespace HeadGait
         }
 
         /// <summary>Whether the window counts as walking: a positive score, or a walking rhythm where the gate listens for one.</summary>
-        public bool Passes(SignalWindow window) => Score(window) > 0 || (usesStepRhythm && StepRhythm.Of(window, levelTolerance).IsWalking);
+        public bool Passes(SignalWindow window) => Passes(window, out _);
+
+        /// <summary><see cref="Passes(SignalWindow)"/>, also giving the regression's log-odds (<see cref="Score"/>).</summary>
+        public bool Passes(SignalWindow window, out double logOdds)
+        {
+            logOdds = Score(window);
+            return logOdds > 0 || (usesStepRhythm && StepRhythm.Of(window, levelTolerance).IsWalking);
+        }
 
         /// <summary>
         /// The gate's inputs for the newest 50 samples (or fewer right after a restart). With <paramref name="levelTolerance"/>

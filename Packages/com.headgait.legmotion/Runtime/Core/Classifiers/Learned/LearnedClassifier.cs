@@ -156,31 +156,44 @@ namespace HeadGait
         public GaitPrediction Classify(SignalWindow window)
         {
             evaluator.Evaluate(Standardise(window), 1, scores);
-            return Decide(window.EndTime, window.SampleRate, GateRefuses(window));
+            return Decide(window.EndTime, window.SampleRate, JudgeGate(window));
         }
 
-        /// <summary>True when <see cref="Gate"/> refuses the window as walking.</summary>
-        public bool GateRefuses(SignalWindow window) => Gate != null && !Gate.Passes(window);
+        /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
+        public GateVerdict JudgeGate(SignalWindow window)
+        {
+            if (Gate == null) return GateVerdict.Passes;
+            if (!Gate.Passes(window, out double logOdds)) return GateVerdict.Refuses;
+            return filter != null && logOdds >= filter.Settings.SureWalkingLogOdds ? GateVerdict.SurelyWalking : GateVerdict.Passes;
+        }
 
         /// <summary>
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
         /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next.
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, bool gateRefused = false)
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes)
         {
             Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
-            return Decide(endTime, sampleRate, gateRefused);
+            return Decide(endTime, sampleRate, gate);
         }
 
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, bool gateRefused)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate)
         {
             ToProbabilities(scores, probabilities);
-            if (gateRefused)
+            if (gate == GateVerdict.Refuses)
             {
                 Array.Clear(probabilities, 0, probabilities.Length);
                 probabilities[Segments.StandingClass] = 1;
+            }
+            else if (gate == GateVerdict.SurelyWalking && filter != null && lastClass >= 0 && lastClass != Segments.StandingClass)
+            {
+                probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
+                double sum = 0;
+                for (int k = 0; k < probabilities.Length; k++) sum += probabilities[k];
+                if (sum > 0)
+                    for (int k = 0; k < probabilities.Length; k++) probabilities[k] /= sum;
             }
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
             lastTime = now;

@@ -23,7 +23,7 @@ namespace HeadGait
         {
             public int Row;
             public double Time, SampleRate;
-            public bool GateRefused;
+            public GateVerdict Gate;
         }
 
         public LearnedWindowBatch(LearnedClassifier classifier)
@@ -50,7 +50,7 @@ namespace HeadGait
                 Array.Resize(ref scores, capacity * classes);
             }
             Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
-            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, GateRefused = classifier.GateRefuses(window) });
+            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window) });
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -87,7 +87,7 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.GateRefused);
+            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.Gate);
         }
 
         public void Clear()

@@ -1,0 +1,18 @@
+namespace HeadGait
+{
+    /// <summary>What the walking gate says of a window, as a learned classifier acts on it.</summary>
+    public enum GateVerdict
+    {
+        /// <summary>Not walking: the window is standing whatever the model scores.</summary>
+        Refuses,
+
+        /// <summary>May be walking: the model decides.</summary>
+        Passes,
+
+        /// <summary>
+        /// Passes with log-odds of at least <see cref="PhaseFilterSettings.SureWalkingLogOdds"/>: a walk in progress is not
+        /// ended on this window.
+        /// </summary>
+        SurelyWalking,
+    }
+}
