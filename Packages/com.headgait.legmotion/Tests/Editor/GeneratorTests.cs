@@ -77,7 +77,7 @@ namespace HeadGait.Tests
             foreach (var s in rec.Samples)
             {
                 var a = s.Imu;
-                double smv = Math.Sqrt(a.X * a.X + a.Y * a.Y + a.Z * a.Z) - 9.80665;
+                double smv = a.Magnitude - 9.80665;
                 (s.Left == GaitPhase.Standing ? stand : walk).Add(smv);
             }
             Assert.That(Std(stand), Is.LessThan(0.15));
