@@ -178,6 +178,9 @@ namespace HeadGait
             return Decide(endTime, sampleRate, gate);
         }
 
+        /// <summary>Whether the last window's prediction was walking.</summary>
+        bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
+
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate)
         {
@@ -187,7 +190,7 @@ namespace HeadGait
                 Array.Clear(probabilities, 0, probabilities.Length);
                 probabilities[Segments.StandingClass] = 1;
             }
-            else if (gate == GateVerdict.SurelyWalking && filter != null && lastClass >= 0 && lastClass != Segments.StandingClass)
+            else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
             {
                 probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
                 double sum = 0;
@@ -210,7 +213,7 @@ namespace HeadGait
                 for (int k = 1; k < p.Length; k++)
                     if (p[k] > p[best]) best = k;
             }
-            if (filter != null && lastClass >= 0 && lastClass != Segments.StandingClass && best != Segments.StandingClass)
+            if (filter != null && WasWalking && best != Segments.StandingClass)
                 best = Steady(best);
             if (best == Segments.StandingClass)
             {
@@ -245,7 +248,7 @@ namespace HeadGait
         /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>
         void TrackContacts(int cls, double now)
         {
-            if (lastClass < 0 || lastClass == Segments.StandingClass || cls == lastClass) return;
+            if (!WasWalking || cls == lastClass) return;
             int n = Segments.Count;
             int forward = (cls - lastClass + n) % n;
             if (forward > n / 2) return; // moved backwards: no new contact
