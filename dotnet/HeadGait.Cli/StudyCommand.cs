@@ -65,7 +65,7 @@ namespace HeadGait.Cli
             for (int i = 1; i <= count; i++)
             {
                 string id = $"P{i:00}";
-                var s = StudySession.Start(folder, id, config);
+                using var s = StudySession.Start(folder, id, config);
                 double susceptibility = 0.5 + random.NextDouble();
                 while (s.Current.Kind != StudyStepKind.Done)
                 {
@@ -98,10 +98,11 @@ namespace HeadGait.Cli
         static int Summarize(string folder, string csvPath, string plotPath)
         {
             var results = StudyResults.Load(folder);
-            foreach (var p in results.Problems) Console.WriteLine($"skipped: {p}");
+            foreach (var p in results.Problems) Console.WriteLine($"problem: {p}");
             if (results.Participants.Count == 0) throw new UsageException($"no readable participant journals in {folder}");
             var conditions = results.Conditions;
             var complete = results.Participants.Where(p => conditions.All(c => p.Conditions.ContainsKey(c))).ToList();
+            if (results.Problems.Count > 0) Console.WriteLine($"{results.Problems.Count} problem(s) above: the figures below leave out every value they name as not used");
             Console.WriteLine($"{results.Participants.Count} participants, {complete.Count} with every condition's SSQ (the ANOVAs use these)");
             Console.WriteLine();
             Console.WriteLine($"{"condition",-18} {"n",3} " + string.Join(" ", Scores.Select(s => $"{s,17}")));

@@ -140,6 +140,7 @@ namespace HeadGait.Tests
             first.Do(OperatorCommand.Start);
             string path = first.Session.JournalPath;
             string before = File.ReadAllText(path);
+            first.Dispose(); // the application dies: its handles, and the participant's lock, go with it
 
             // The application is closed mid-walk (a crash: nothing else is written) and reopened.
             var second = new StudyOperator(folder, new StudyConfig { Conditions = new List<string> { "other" } });
@@ -165,7 +166,7 @@ namespace HeadGait.Tests
             Assert.That(op.Do(OperatorCommand.Next), Is.False);
             Assert.That(op.Open("P09"), Is.True);
             Assert.That(op.Current.Value.Kind, Is.EqualTo(StudyStepKind.PreExposureSsq));
-            Assert.That(StudyJournal.Open(folder, "P09").Entries.Any(e => e.Kind == "event" && e.Key == "aborted"), Is.True);
+            Assert.That(StudyJournal.Open(folder, "P09", forWriting: false).Entries.Any(e => e.Kind == "event" && e.Key == "aborted"), Is.True);
         }
 
         [TestCase("../P01", "path separators")]
@@ -183,28 +184,29 @@ namespace HeadGait.Tests
         [Test]
         public void AFailingDiskIsAnErrorOnTheScreenAndTheSameCommandWorksOnceFixed()
         {
-            var op = new StudyOperator(folder, new StudyConfig());
+            var files = new FaultyFileAccess();
+            var op = new StudyOperator(folder, new StudyConfig(), files);
             op.Open("P04");
             op.Do(OperatorCommand.Next);
             Fill(op.Ssq, 2);
             string path = op.Session.JournalPath;
             string saved = File.ReadAllText(path);
-            // The journal's path is taken by a folder, so the append fails as on a full or read-only disk (also as root).
-            File.Move(path, path + ".keep");
-            Directory.CreateDirectory(path);
+            files.FillDiskAfter(writes: 0, keepBytes: 20);
 
             Assert.That(op.Do(OperatorCommand.Next), Is.False);
             var screen = op.Screen();
-            Assert.That(screen.Error, Does.Contain("P04").And.Contain(path).And.Contain("Nothing was lost"));
+            Assert.That(screen.Error, Does.Contain("P04").And.Contain(path).And.Contain("NOT saved").And.Contain("nothing was lost"));
             Assert.That(op.Current.Value.Kind, Is.EqualTo(StudyStepKind.PreExposureSsq), "the step is not left unsaved");
             Assert.That(op.Ssq.IsComplete, Is.True, "the participant's answers stay on the form for the retry");
-
-            Directory.Delete(path);
-            File.Move(path + ".keep", path);
             Assert.That(File.ReadAllText(path), Is.EqualTo(saved));
+
+            files.FreeSpace();
             Assert.That(op.Do(OperatorCommand.Next), Is.True, op.Error);
             Assert.That(op.Screen().Error, Is.Null);
-            Assert.That(StudySession.Resume(folder, "P04", readOnly: true).SsqOf(1), Is.EqualTo(Expected(2)));
+            var r = StudySession.Resume(folder, "P04", readOnly: true);
+            Assert.That(r.SsqOf(1), Is.EqualTo(Expected(2)));
+            Assert.That(r.SsqAnswersOf(1).Count, Is.EqualTo(1));
+            Assert.That(r.Damage, Is.Empty);
         }
 
         [Test]

@@ -196,7 +196,8 @@ namespace HeadGait.Tests
                 catch (OperationCanceledException)
                 {
                 }
-                // The process died: reopen from disk only.
+                // The process died (its handles, and with them the participant's lock, are closed): reopen from disk only.
+                session.Dispose();
                 var resumed = StudySession.Resume(folder, id);
                 Assert.That(resumed.Current.Index, Is.EqualTo(session.Current.Index), $"crash after action {crashAfter}");
                 foreach (var step in session.Steps)
@@ -216,6 +217,7 @@ namespace HeadGait.Tests
             s.Answer("age", "40");
             s.CompleteStep();
             s.AnswerSsq(Ssq(1));
+            s.Dispose();
             using (var fs = new FileStream(s.JournalPath, FileMode.Append))
             {
                 var half = Encoding.UTF8.GetBytes("17\t2026-11-22T10:00:00.000Z\tans");
@@ -227,6 +229,7 @@ namespace HeadGait.Tests
             Assert.That(r.SsqOf(1), Is.EqualTo(Ssq(1)));
             Assert.That(r.Current.Kind, Is.EqualTo(StudyStepKind.PreExposureSsq));
             r.CompleteStep();
+            r.Dispose();
             Assert.That(StudySession.Resume(folder, "P05").Current.Kind, Is.EqualTo(StudyStepKind.BaselineWalk), "appends after the cut stay readable");
         }
 
@@ -235,6 +238,7 @@ namespace HeadGait.Tests
         {
             var s = StudySession.Start(folder, "P09", new StudyConfig());
             s.Answer("age", "22");
+            s.Dispose();
             var e = Assert.Throws<StudyStorageException>(() => StudySession.Start(folder, "P09", new StudyConfig()));
             Assert.That(e.Message, Does.Contain("P09").And.Contain("already has data"));
             Assert.That(StudySession.Resume(folder, "P09").AnswersOf(0)["age"], Is.EqualTo("22"));
@@ -263,25 +267,30 @@ namespace HeadGait.Tests
             var e = Assert.Throws<StudyStorageException>(() => s.Answer("gender", "male"));
             Assert.That(e.Message, Does.Contain("P03").And.Contain(s.JournalPath));
             File.SetAttributes(s.JournalPath, FileAttributes.Normal);
+            s.Dispose();
             Assert.That(StudySession.Resume(folder, "P03").AnswersOf(0).Count, Is.EqualTo(1));
         }
 
         [Test]
         public void AFailingWriteIsAClearErrorAndKeepsWhatWasSaved()
         {
-            // Works as root too: the journal's path is taken by a folder, so the append fails like a full disk would.
-            var s = StudySession.Start(folder, "P04", new StudyConfig());
+            // The disk fills in the middle of the line: part of it reaches the file, then the write fails.
+            var files = new FaultyFileAccess();
+            var s = StudySession.Start(folder, "P04", new StudyConfig(), files);
             s.Answer("age", "50");
             string path = s.JournalPath;
             string saved = File.ReadAllText(path);
-            File.Move(path, path + ".keep");
-            Directory.CreateDirectory(path);
+            files.FillDiskAfter(writes: 0, keepBytes: 7);
             var e = Assert.Throws<StudyStorageException>(() => s.Answer("gender", "male"));
-            Assert.That(e.Message, Does.Contain("P04").And.Contain(path).And.Contain("Nothing was lost"));
-            Directory.Delete(path);
-            File.Move(path + ".keep", path);
-            Assert.That(File.ReadAllText(path), Is.EqualTo(saved));
-            Assert.That(StudySession.Resume(folder, "P04").AnswersOf(0).Count, Is.EqualTo(1));
+            Assert.That(e.Message, Does.Contain("P04").And.Contain(path).And.Contain("NOT saved").And.Contain("nothing was lost"));
+            Assert.That(File.ReadAllText(path), Is.EqualTo(saved), "the part that reached the disk is cut again");
+            files.FreeSpace();
+            s.Answer("gender", "male");
+            s.Dispose();
+            var r = StudySession.Resume(folder, "P04", readOnly: true);
+            Assert.That(r.AnswersOf(0)["gender"], Is.EqualTo("male"));
+            Assert.That(r.Damage, Is.Empty);
+            Assert.That(r.RecoveredTornLine, Is.False);
         }
 
         [Test]

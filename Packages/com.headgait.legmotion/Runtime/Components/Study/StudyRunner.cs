@@ -68,5 +68,8 @@ namespace HeadGait.Unity
         {
             if (avatars != null && Operator != null) avatars.Show(Operator.ActiveCondition);
         }
+
+        // Releases the open participant's lock when the scene or play mode ends (the editor process lives on).
+        void OnDestroy() => Operator?.Dispose();
     }
 }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace HeadGait.Study
 {
@@ -75,6 +76,15 @@ namespace HeadGait.Study
                 if (ratings[i] == Unanswered)
                     throw new InvalidOperationException($"SSQ item {i + 1} '{SimulatorSicknessQuestionnaire.Label((SsqItem)i)}' is not rated yet ({AnsweredCount} of {ratings.Length} rated).");
             return (int[])ratings.Clone();
+        }
+
+        /// <summary>Fills the form with saved ratings (a resumed SSQ step shows what was saved); the focus goes to the first item.</summary>
+        public void Load(IReadOnlyList<int> saved)
+        {
+            SimulatorSicknessQuestionnaire.Score(saved);
+            for (int i = 0; i < ratings.Length; i++) ratings[i] = saved[i];
+            Focus = 0;
+            Version++;
         }
 
         public void Clear()

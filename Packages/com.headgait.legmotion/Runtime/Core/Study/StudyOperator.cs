@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
+using System.Text;
 
 namespace HeadGait.Study
 {
@@ -23,17 +25,20 @@ namespace HeadGait.Study
     /// must show. A failed write (full or read-only disk) never throws out of here: it becomes <see cref="Error"/>, shown
     /// on the operator screen, and the command can be given again once the cause is fixed.
     /// </summary>
-    public sealed class StudyOperator
+    public sealed class StudyOperator : IDisposable
     {
         readonly StudyConfig config;
+        readonly JournalFileAccess files;
         bool walking;
 
-        public StudyOperator(string dataFolder, StudyConfig config)
+        /// <param name="files">The journal's file access (tests stand in full disks and crashes); null: the real file system.</param>
+        public StudyOperator(string dataFolder, StudyConfig config, JournalFileAccess files = null)
         {
             if (string.IsNullOrEmpty(dataFolder)) throw new ArgumentException("The study needs a data folder.");
             config.Validate();
             DataFolder = dataFolder;
             this.config = config;
+            this.files = files;
         }
 
         public string DataFolder { get; }
@@ -64,24 +69,41 @@ namespace HeadGait.Study
         /// <summary>True while the current step is an SSQ, i.e. while the VR panel should be up.</summary>
         public bool SsqOpen => Current is StudyStep s && s.IsSsq;
 
-        /// <summary>Opens a participant: resumes one that has data, starts a new one otherwise.</summary>
+        /// <summary>
+        /// Opens a participant: resumes one that has data, starts a new one otherwise. Refused while the id is open in another
+        /// session (this application or another). A resumed SSQ step whose answer was saved shows it on the form.
+        /// </summary>
         public bool Open(string participantId)
         {
             return Try(() =>
             {
                 if (Session != null) throw new InvalidOperationException($"Participant {Session.Participant} is open; abort it first.");
-                participantId = (participantId ?? "").Trim();
-                ParticipantIds.Validate(participantId);
-                bool hasData = StudyJournal.Exists(DataFolder, participantId) && StudyJournal.Open(DataFolder, participantId, repair: false).Entries.Count > 0;
-                Session = hasData ? StudySession.Resume(DataFolder, participantId) : StudySession.Start(DataFolder, participantId, config);
+                string id = ParticipantIds.Canonical(participantId);
+                Session = StudySession.OpenOrStart(DataFolder, id, config, out bool resumed, files);
                 walking = false;
                 Ssq.Clear();
                 var step = Session.Current;
-                Notice = hasData
-                    ? $"Resumed participant {participantId} at step {step.Index + 1} of {Session.Steps.Count} ({Describe(step)}); nothing saved before is changed."
-                      + (Session.RecoveredTornLine ? " A half-written last line from a crash was dropped." : "")
-                    : $"Started participant {participantId}; data goes to {Session.JournalPath}.";
+                var notice = new StringBuilder(resumed
+                    ? $"Resumed participant {id} at step {step.Index + 1} of {Session.Steps.Count} ({Describe(step)}); nothing saved before is changed."
+                    : $"Started participant {id}; data goes to {Session.JournalPath}.");
+                if (Session.RecoveredTornLine) notice.Append(" A half-written last line from a crash was cut (it had not been acknowledged).");
+                if (Session.Damage.Count > 0) notice.Append($" {Session.Damage.Count} damaged line(s) in the journal are kept as they are and not used ({Session.Damage[0]}).");
+                var saved = step.IsSsq ? Session.SsqOf(step.Index) : null;
+                if (saved != null)
+                {
+                    Ssq.Load(saved);
+                    notice.Append($" This step's SSQ was saved before the session stopped ({SimulatorSicknessQuestionnaire.Score(saved)}): Next goes on without saving it again; a changed rating is saved as a correction.");
+                }
+                Notice = notice.ToString();
             });
+        }
+
+        /// <summary>Closes the open participant without writing anything (the application quits); everything saved stays and the id is free again.</summary>
+        public void Dispose()
+        {
+            Session?.Dispose();
+            Session = null;
+            walking = false;
         }
 
         public bool CanDo(OperatorCommand command)
@@ -145,10 +167,14 @@ namespace HeadGait.Study
             var step = Session.Current;
             if (step.IsSsq)
             {
-                var scores = Session.AnswerSsq(Ssq.Ratings());
+                var ratings = Ssq.Ratings();
+                var saved = Session.SsqOf(step.Index);
+                bool same = saved != null && saved.SequenceEqual(ratings);
+                // Saved already (a resumed step, or a retry after the "done" line failed): not saved twice.
+                var scores = same ? SimulatorSicknessQuestionnaire.Score(ratings) : Session.AnswerSsq(ratings);
                 Session.CompleteStep();
                 Ssq.Clear();
-                Notice = $"SSQ saved: {scores}.";
+                Notice = saved != null && !same ? $"SSQ corrected and saved: {scores} (the first answer stays in the journal)." : $"SSQ saved: {scores}.";
                 return;
             }
             if (walking) Session.Event("walk-finished");
@@ -163,6 +189,7 @@ namespace HeadGait.Study
             int step = Session.Current.Index;
             bool saved = Try(() => Session.Event("aborted"));
             // The session closes even when the abort note could not be written: every answer is already on disk.
+            Session.Dispose();
             Session = null;
             walking = false;
             Ssq.Clear();

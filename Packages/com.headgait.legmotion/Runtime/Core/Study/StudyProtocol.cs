@@ -81,8 +81,13 @@ namespace HeadGait.Study
         public static List<StudyStep> StepsFor(string participantId, StudyConfig config)
         {
             config.Validate();
-            ParticipantIds.Validate(participantId);
-            var order = Counterbalancing.OrderFor(participantId, config.Conditions.Count);
+            return StepsFor(config, Counterbalancing.OrderFor(ParticipantIds.Canonical(participantId), config.Conditions.Count));
+        }
+
+        /// <summary>The steps for a given condition order (indices into the conditions), e.g. the one saved with a participant.</summary>
+        public static List<StudyStep> StepsFor(StudyConfig config, int[] order)
+        {
+            config.Validate();
             var steps = new List<StudyStep>();
             void Add(StudyStepKind kind, string condition = null) => steps.Add(new StudyStep(steps.Count, kind, condition));
             Add(StudyStepKind.Demographics);
@@ -101,11 +106,18 @@ namespace HeadGait.Study
         }
     }
 
-    /// <summary>Participant ids name files: short, and nothing that could leave the data folder.</summary>
+    /// <summary>
+    /// Participant ids name files: short, nothing that could leave the data folder, one canonical form (upper case: "p01"
+    /// and "P01" are one participant, as they are one file on Windows and macOS disks), no names Windows reserves for
+    /// devices (CON, PRN, AUX, NUL, COM1-9, LPT1-9) and nothing that reads as a command-line option (a leading '-').
+    /// </summary>
     public static class ParticipantIds
     {
         public const int MaxLength = 32;
 
+        static readonly string[] DeviceNames = { "CON", "PRN", "AUX", "NUL" };
+
+        /// <summary>Letters, digits, '-' and '_', 1 to 32 of them (also the rule for condition names).</summary>
         public static bool IsValidName(string id)
         {
             if (string.IsNullOrEmpty(id) || id.Length > MaxLength) return false;
@@ -120,6 +132,34 @@ namespace HeadGait.Study
             if (string.IsNullOrEmpty(id)) throw new ArgumentException("The participant id is empty.");
             if (id.Length > MaxLength) throw new ArgumentException($"The participant id '{id.Substring(0, 10)}...' is longer than {MaxLength} characters.");
             if (!IsValidName(id)) throw new ArgumentException($"The participant id '{id}' may hold only letters, digits, '-' and '_' (no spaces, dots or path separators).");
+            if (id[0] == '-') throw new ArgumentException($"The participant id '{id}' starts with '-', which reads as a command-line option; start it with a letter or digit.");
+            string upper = id.ToUpperInvariant();
+            bool device = Array.IndexOf(DeviceNames, upper) >= 0
+                          || upper.Length == 4 && (upper.StartsWith("COM", StringComparison.Ordinal) || upper.StartsWith("LPT", StringComparison.Ordinal)) && upper[3] >= '1' && upper[3] <= '9';
+            if (device) throw new ArgumentException($"The participant id '{id}' is a name Windows reserves for a device and cannot name a file; choose another (e.g. P01).");
+        }
+
+        /// <summary>The id's one form (trimmed, upper case); throws <see cref="ArgumentException"/> for an invalid id.</summary>
+        public static string Canonical(string id)
+        {
+            id = (id ?? "").Trim();
+            Validate(id);
+            return id.ToUpperInvariant();
+        }
+
+        /// <summary>True (with its canonical form) for a valid id.</summary>
+        public static bool TryCanonical(string id, out string canonical)
+        {
+            try
+            {
+                canonical = Canonical(id);
+                return true;
+            }
+            catch (ArgumentException)
+            {
+                canonical = null;
+                return false;
+            }
         }
     }
 }

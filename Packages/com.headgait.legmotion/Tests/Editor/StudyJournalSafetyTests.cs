@@ -1,0 +1,156 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text;
+using HeadGait.Study;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>Regression tests for the study journal as the operator's only copy of a participant's answers (issue 34, items 1-5).</summary>
+    public class StudyJournalSafetyTests
+    {
+        string folder;
+
+        [SetUp]
+        public void MakeFolder() => folder = Path.Combine(Path.GetTempPath(), "headgait-journal-" + Guid.NewGuid().ToString("N"));
+
+        [TearDown]
+        public void RemoveFolder()
+        {
+            if (Directory.Exists(folder)) Directory.Delete(folder, true);
+        }
+
+        static int[] Ssq(int seed) => Enumerable.Range(0, SimulatorSicknessQuestionnaire.ItemCount).Select(i => (seed * 7 + i * 3) % 4).ToArray();
+
+        static void Close(object session) => (session as IDisposable)?.Dispose();
+
+        /// <summary>A whole participant through every step, closed at the end.</summary>
+        void Complete(string id)
+        {
+            var s = StudySession.Start(folder, id, new StudyConfig());
+            while (s.Current.Kind != StudyStepKind.Done)
+            {
+                if (s.Current.Kind == StudyStepKind.Demographics) s.Answer("age", "31");
+                if (s.Current.IsSsq) s.AnswerSsq(Ssq(s.Current.Index));
+                s.CompleteStep();
+            }
+            Close(s);
+        }
+
+        [Test]
+        public void ASecondOperatorOnTheSameIdIsRefusedWhileTheFirstHasItOpen()
+        {
+            var first = new StudyOperator(folder, new StudyConfig());
+            Assert.That(first.Open("P07"), Is.True, first.Error);
+            first.SetDemographic("age", "30");
+            var second = new StudyOperator(folder, new StudyConfig());
+            Assert.That(second.Open("P07"), Is.False, "two writers on one participant");
+            Assert.That(second.Error, Does.Contain("P07").And.Contain("in use").And.Contain("since"));
+            Assert.That(second.Session, Is.Null);
+            Assert.That(first.SetDemographic("gender", "female"), Is.True, first.Error);
+            Assert.That(first.Do(OperatorCommand.Abort), Is.True);
+            Assert.That(second.Open("p07"), Is.True, "free again once the first closed it: " + second.Error);
+            Assert.That(second.Session.AnswersOf(0).Count, Is.EqualTo(2));
+        }
+
+        [Test]
+        public void AZeroByteOrHalfWrittenJournalFromACrashAtCreationDoesNotBlockTheId()
+        {
+            Directory.CreateDirectory(folder);
+            File.WriteAllBytes(Path.Combine(folder, "P03" + StudyJournal.Extension), new byte[0]);
+            File.WriteAllText(Path.Combine(folder, "P04" + StudyJournal.Extension), "# headgait-stu");
+            foreach (var id in new[] { "P03", "P04" })
+            {
+                var op = new StudyOperator(folder, new StudyConfig());
+                Assert.That(op.Open(id), Is.True, op.Error);
+                Assert.That(op.Notice, Does.StartWith("Started participant " + id));
+                Assert.That(op.SetDemographic("age", "22"), Is.True, op.Error);
+                Assert.That(op.Do(OperatorCommand.Abort), Is.True);
+                var r = StudySession.Resume(folder, id, readOnly: true);
+                Assert.That(r.AnswersOf(0)["age"], Is.EqualTo("22"));
+            }
+        }
+
+        [Test]
+        public void ACrashBetweenAnSsqAnswerAndItsDoneLineShowsTheSavedSsqAndKeepsIt()
+        {
+            var s = StudySession.Start(folder, "P05", new StudyConfig());
+            s.Answer("age", "40");
+            s.CompleteStep();
+            s.AnswerSsq(Ssq(3));
+            Close(s); // the process died before the "done" line
+            var op = new StudyOperator(folder, new StudyConfig());
+            Assert.That(op.Open("P05"), Is.True, op.Error);
+            Assert.That(op.Current.Value.Kind, Is.EqualTo(StudyStepKind.PreExposureSsq));
+            Assert.That(op.Ssq.IsComplete, Is.True, "the saved SSQ is shown as saved, not as an empty form");
+            Assert.That(op.Ssq.Ratings(), Is.EqualTo(Ssq(3)));
+            Assert.That(op.Notice, Does.Contain("SSQ").And.Contain("saved"));
+            Assert.That(op.Do(OperatorCommand.Next), Is.True, op.Error);
+            Assert.That(op.Do(OperatorCommand.Abort), Is.True);
+            var journal = StudyJournal.Open(folder, "P05", false);
+            Assert.That(journal.Entries.Count(e => e.Kind == "answer" && e.Key == "ssq"), Is.EqualTo(1), "going on does not save it again");
+            Assert.That(StudySession.Resume(folder, "P05", readOnly: true).Current.Kind, Is.EqualTo(StudyStepKind.BaselineWalk));
+        }
+
+        [Test]
+        public void ADamagedSsqValueIsReportedNotDroppedSilently()
+        {
+            Complete("P01");
+            string path = Path.Combine(folder, "P01" + StudyJournal.Extension);
+            var lines = File.ReadAllLines(path).ToList();
+            int ssq = lines.FindIndex(l => l.Contains("\tssq\t"));
+            int comma = lines[ssq].IndexOf(',');
+            lines[ssq] = lines[ssq].Substring(0, comma) + "$" + lines[ssq].Substring(comma + 1);
+            File.WriteAllText(path, string.Join("\n", lines) + "\n");
+            var results = StudyResults.Load(folder);
+            Assert.That(results.Problems, Has.Some.Contains("P01"), "a damaged value is reported");
+            Assert.That(results.Participants.Single().PreExposure.HasValue, Is.False, "and not used");
+        }
+
+        [Test]
+        public void AJournalWithWindowsLineEndsReadsTheSame()
+        {
+            Complete("P02");
+            var before = StudyResults.Load(folder).Participants.Single();
+            string path = Path.Combine(folder, "P02" + StudyJournal.Extension);
+            File.WriteAllText(path, File.ReadAllText(path).Replace("\n", "\r\n"));
+            var results = StudyResults.Load(folder);
+            Assert.That(results.Problems, Is.Empty);
+            var after = results.Participants.Single();
+            Assert.That(after.Conditions.Keys, Is.EquivalentTo(before.Conditions.Keys));
+            foreach (var c in before.Conditions.Keys) Assert.That(after.Conditions[c].Total, Is.EqualTo(before.Conditions[c].Total));
+            Assert.That(after.PreExposure.Value.Total, Is.EqualTo(before.PreExposure.Value.Total));
+        }
+
+        [TestCase("CON")]
+        [TestCase("nul")]
+        [TestCase("Com1")]
+        [TestCase("LPT9")]
+        [TestCase("aux")]
+        [TestCase("PRN")]
+        [TestCase("--help")]
+        [TestCase("-P01")]
+        public void ReservedDeviceNamesAndOptionLikeIdsAreRefused(string id)
+        {
+            Assert.That(() => ParticipantIds.Validate(id), Throws.ArgumentException);
+            var op = new StudyOperator(folder, new StudyConfig());
+            Assert.That(op.Open(id), Is.False);
+            Assert.That(Directory.Exists(folder), Is.False);
+        }
+
+        [Test]
+        public void IdsDifferingOnlyInCaseAreOneParticipant()
+        {
+            var s = StudySession.Start(folder, "p01", new StudyConfig());
+            s.Answer("age", "33");
+            Close(s);
+            var op = new StudyOperator(folder, new StudyConfig());
+            Assert.That(op.Open("P01"), Is.True, op.Error);
+            Assert.That(op.Notice, Does.StartWith("Resumed participant P01"));
+            Assert.That(op.Session.AnswersOf(0)["age"], Is.EqualTo("33"));
+            Assert.That(() => StudySession.Start(folder, "P01", new StudyConfig()), Throws.InstanceOf<StudyStorageException>());
+        }
+    }
+}
