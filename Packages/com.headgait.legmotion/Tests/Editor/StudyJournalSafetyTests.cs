@@ -152,5 +152,55 @@ namespace HeadGait.Tests
             Assert.That(op.Session.AnswersOf(0)["age"], Is.EqualTo("33"));
             Assert.That(() => StudySession.Start(folder, "P01", new StudyConfig()), Throws.InstanceOf<StudyStorageException>());
         }
+        [Test]
+        public void AVersion1JournalStillReadsAndResumesWithCheckedLines()
+        {
+            // As the previous version wrote it: no checksums, a lower-case id, CRLF from a Windows copy.
+            Directory.CreateDirectory(folder);
+            string path = Path.Combine(folder, "p11" + StudyJournal.Extension);
+            string T(int n) => $"2026-11-22T10:00:{n:00}.000Z";
+            var lines = new List<string>
+            {
+                StudyJournal.MagicV1,
+                $"1\t{T(1)}\tsession\t-1\tconditions\tno-avatar,block-avatar,humanoid-avatar",
+                $"2\t{T(2)}\tsession\t-1\tpath_length_m\t16",
+                $"3\t{T(3)}\tsession\t-1\thumanoid_classifier\tcor",
+                $"4\t{T(4)}\tsession\t-1\trest_s\t120",
+                $"5\t{T(5)}\tsession\t-1\torder\thumanoid-avatar,no-avatar,block-avatar",
+                $"6\t{T(6)}\tanswer\t0\tage\t27",
+                $"7\t{T(7)}\tdone\t0\t\t",
+                $"8\t{T(8)}\tanswer\t1\tssq\t{string.Join(",", Ssq(1))}",
+            };
+            File.WriteAllText(path, string.Join("\r\n", lines) + "\r\n");
+            var op = new StudyOperator(folder, new StudyConfig());
+            Assert.That(op.Open("P11"), Is.True, op.Error);
+            Assert.That(op.Session.Participant, Is.EqualTo("P11"));
+            Assert.That(op.Session.JournalPath, Is.EqualTo(path), "the older lower-case file is found, not a second one made");
+            Assert.That(op.Ssq.Ratings(), Is.EqualTo(Ssq(1)));
+            Assert.That(op.Session.Steps.Where(st => st.Kind == StudyStepKind.Trial).Select(st => st.Condition),
+                Is.EqualTo(new[] { "humanoid-avatar", "no-avatar", "block-avatar" }), "the saved order, whatever the id");
+            Assert.That(op.Do(OperatorCommand.Next), Is.True, op.Error);
+            op.Dispose();
+            var text = File.ReadAllText(path);
+            Assert.That(text, Does.StartWith(StudyJournal.MagicV1));
+            Assert.That(text.Split('\n').Last(l => l.Length > 0), Does.Match(@"\tdone\t1\t\t\t\d+:[0-9a-f]{8}$"), "new lines carry checksums");
+            var results = StudyResults.Load(folder);
+            Assert.That(results.Participants.Single().PreExposure.Value.Total, Is.EqualTo(SimulatorSicknessQuestionnaire.Score(Ssq(1)).Total));
+            Assert.That(results.Problems, Has.Some.Contains("v1"));
+        }
+
+        [Test]
+        public void AnAbsurdlyLargeJournalIsRefusedNamingTheLimit()
+        {
+            Directory.CreateDirectory(folder);
+            string path = Path.Combine(folder, "P12" + StudyJournal.Extension);
+            using (var fs = new FileStream(path, FileMode.CreateNew)) fs.SetLength(StudyJournal.MaxBytes + 1);
+            var results = StudyResults.Load(folder);
+            Assert.That(results.Participants, Is.Empty);
+            Assert.That(results.Problems.Single(), Does.Contain(path).And.Contain(StudyJournal.MaxBytes.ToString()));
+            var op = new StudyOperator(folder, new StudyConfig());
+            Assert.That(op.Open("P12"), Is.False);
+            Assert.That(op.Error, Does.Contain(path));
+        }
     }
 }

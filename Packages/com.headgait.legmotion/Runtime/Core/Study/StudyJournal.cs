@@ -25,8 +25,6 @@ namespace HeadGait.Study
         public string Value;
         /// <summary>The line's number in the file (1 is the format line).</summary>
         public int LineNumber;
-        /// <summary>False for lines of a v1 journal, which carry no checksum (damage to them cannot be detected).</summary>
-        public bool Checked;
     }
 
     /// <summary>A line of a journal that cannot be trusted (fails its checksum or cannot be read): kept in the file, never used, always reported.</summary>
@@ -91,35 +89,18 @@ namespace HeadGait.Study
         public IReadOnlyList<JournalDamage> Damage => damage;
         /// <summary>True for a journal without checksums (written before format v2).</summary>
         public bool IsV1 { get; private set; }
-        /// <summary>True when the journal is open for writing (and holds the participant's lock).</summary>
-        public bool IsWritable => stream != null;
-
         /// <summary>True when the last line was torn (a crash mid-write); it was never acknowledged.</summary>
         public bool RecoveredTornLine => TornBytes > 0;
         /// <summary>Bytes of a torn last line: cut from the file when opened for writing, skipped when only read.</summary>
         public int TornBytes { get; private set; }
         /// <summary>True when the file held no complete format line (a crash at creation under an older version): treated as empty.</summary>
-        public bool RepairedHeader { get; private set; }
+        bool RepairedHeader { get; set; }
 
         /// <summary>True when the journal holds anything besides its format line.</summary>
         public bool HasData => entries.Count > 0 || damage.Count > 0;
 
         /// <summary>The journal's path for an id (an existing journal whose name differs only in case is found).</summary>
         public static string PathFor(string folder, string participantId) => Resolve(folder, ParticipantIds.Canonical(participantId));
-
-        public static bool Exists(string folder, string participantId) => File.Exists(PathFor(folder, participantId));
-
-        /// <summary>Starts a new participant; refuses (with the path) when the id already has data.</summary>
-        public static StudyJournal Create(string folder, string participantId, JournalFileAccess files = null)
-        {
-            var journal = OpenOrCreate(folder, participantId, files);
-            if (journal.HasData)
-            {
-                journal.Dispose();
-                throw new StudyStorageException($"Participant {journal.Participant} already has data in {journal.Path}; open it to resume, or choose another id.");
-            }
-            return journal;
-        }
 
         /// <summary>Opens a participant's journal for writing, creating it when the id has none; holds the id's lock until disposed.</summary>
         public static StudyJournal OpenOrCreate(string folder, string participantId, JournalFileAccess files = null)
@@ -425,7 +406,6 @@ namespace HeadGait.Study
                     var entry = ParsePayload(Decode(bytes, p.start, payload), p.number);
                     if (entry != null)
                     {
-                        entry.Checked = true;
                         entries.Add(entry);
                         continue;
                     }
@@ -512,7 +492,6 @@ namespace HeadGait.Study
                 Key = key ?? "",
                 Value = value ?? "",
                 LineNumber = lineCount + 2,
-                Checked = true,
             };
             var bytes = Line(entry);
             try

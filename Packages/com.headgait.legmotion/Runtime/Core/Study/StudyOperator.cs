@@ -86,7 +86,7 @@ namespace HeadGait.Study
                 var notice = new StringBuilder(resumed
                     ? $"Resumed participant {id} at step {step.Index + 1} of {Session.Steps.Count} ({Describe(step)}); nothing saved before is changed."
                     : $"Started participant {id}; data goes to {Session.JournalPath}.");
-                if (Session.RecoveredTornLine) notice.Append(" A half-written last line from a crash was cut (it had not been acknowledged).");
+                if (Session.RecoveredTornLine) notice.Append($" A half-written last line from a crash ({Session.TornBytes} bytes) was cut; it had never been acknowledged.");
                 if (Session.Damage.Count > 0) notice.Append($" {Session.Damage.Count} damaged line(s) in the journal are kept as they are and not used ({Session.Damage[0]}).");
                 var saved = step.IsSsq ? Session.SsqOf(step.Index) : null;
                 if (saved != null)

@@ -34,6 +34,8 @@ namespace HeadGait.Study
         public IReadOnlyList<StudyStep> Steps { get; }
         public string JournalPath => journal.Path;
         public bool RecoveredTornLine => journal.RecoveredTornLine;
+        /// <summary>Bytes of the torn last line cut (or, read only, skipped).</summary>
+        public int TornBytes => journal.TornBytes;
         /// <summary>Lines of the journal that fail their checksum or cannot be read: left out of the session and reported.</summary>
         public IReadOnlyList<JournalDamage> Damage => journal.Damage;
         /// <summary>True for a journal written before checksums (v1): damage to its older lines cannot be detected.</summary>
