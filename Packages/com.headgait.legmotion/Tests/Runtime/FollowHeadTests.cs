@@ -14,10 +14,26 @@ namespace HeadGait.Tests
     {
         const float Frame = 1f / 72f;
 
-        static (FollowHead follow, Transform head) Make(float floorHeight = 0, float positionSmoothing = 0, float headingSmoothing = 0)
+        readonly List<GameObject> made = new List<GameObject>();
+
+        GameObject New(string name)
         {
-            var head = new GameObject("Head").transform;
-            var follow = new GameObject("Avatar").AddComponent<FollowHead>();
+            var go = new GameObject(name);
+            made.Add(go);
+            return go;
+        }
+
+        [TearDown]
+        public void DestroyWhatTheTestMade()
+        {
+            foreach (var go in made) UnityEngine.Object.Destroy(go);
+            made.Clear();
+        }
+
+        (FollowHead follow, Transform head) Make(float floorHeight = 0, float positionSmoothing = 0, float headingSmoothing = 0)
+        {
+            var head = New("Head").transform;
+            var follow = New("Avatar").AddComponent<FollowHead>();
             follow.Head = head;
             follow.FloorHeight = floorHeight;
             follow.PositionSmoothing = positionSmoothing;
@@ -137,7 +153,7 @@ namespace HeadGait.Tests
         public void ALostHeadPoseIsIgnoredAndTheFeetStandOnTheFloorObject()
         {
             var (follow, head) = Make(floorHeight: 0.05f);
-            var floor = new GameObject("XR Origin").transform;
+            var floor = New("XR Origin").transform;
             floor.position = new Vector3(0, 1.2f, 0);
             follow.Floor = floor;
 

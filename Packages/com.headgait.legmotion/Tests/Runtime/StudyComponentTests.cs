@@ -12,14 +12,24 @@ namespace HeadGait.Tests
     public class StudyComponentTests
     {
         string folder;
+        readonly List<GameObject> made = new List<GameObject>();
+
+        GameObject New(string name)
+        {
+            var go = new GameObject(name);
+            made.Add(go);
+            return go;
+        }
 
         [SetUp]
         public void MakeFolder() => folder = Path.Combine(Path.GetTempPath(), "headgait-keys-" + Guid.NewGuid().ToString("N"));
 
         [TearDown]
-        public void RemoveFolder()
+        public void RemoveFolderAndObjects()
         {
             if (Directory.Exists(folder)) Directory.Delete(folder, true);
+            foreach (var go in made) UnityEngine.Object.Destroy(go);
+            made.Clear();
         }
 
         [Test]
@@ -66,9 +76,9 @@ namespace HeadGait.Tests
         [Test]
         public void TheSwitcherShowsOneConditionsAvatarAndHidesTheRest()
         {
-            var block = new GameObject("Block Avatar");
-            var humanoid = new GameObject("Humanoid Avatar");
-            var switcher = new GameObject("Avatars").AddComponent<AvatarConditionSwitcher>();
+            var block = New("Block Avatar");
+            var humanoid = New("Humanoid Avatar");
+            var switcher = New("Avatars").AddComponent<AvatarConditionSwitcher>();
             switcher.Configure(new List<AvatarCondition>
             {
                 new AvatarCondition { condition = StudyConfig.NoAvatar },
@@ -90,6 +100,19 @@ namespace HeadGait.Tests
             Assert.That(switcher.Show("female-avatar"), Is.False, "an unknown condition shows nothing and says so");
             Assert.That(switcher.Shown, Is.Null);
             Assert.That(switcher.Missing(new[] { StudyConfig.BlockAvatar, "female-avatar" }), Is.EqualTo(new[] { "female-avatar" }));
+        }
+    
+        [Test]
+        public void WithNoFolderSetTheStudyWritesToTheApplicationsPersistentDataFolder()
+        {
+            // A standalone headset has no Documents folder: persistentDataPath is where the application may write and what
+            // `adb pull` copies off it. The runner wakes as it is added (the operator view shows the folder it chose).
+            var runner = New("Study").AddComponent<StudyRunner>();
+            string expected = Path.Combine(Application.persistentDataPath, "HeadGait Study");
+            Assert.That(runner.DataFolder, Is.EqualTo(expected));
+            Assert.That(runner.Operator, Is.Not.Null);
+            Assert.That(runner.Operator.DataFolder, Is.EqualTo(expected));
+            Assert.That(runner.SetupError, Does.Contain("Avatar Condition Switcher"), "no switcher in this scene");
         }
     }
 }
