@@ -14,14 +14,10 @@ namespace HeadGait.Tests
     /// </summary>
     public class SsqPanelTests
     {
-        readonly List<GameObject> made = new List<GameObject>();
+        readonly TestObjects objects = new TestObjects();
 
         [TearDown]
-        public void DestroyWhatTheTestMade()
-        {
-            foreach (var go in made) Object.DestroyImmediate(go);
-            made.Clear();
-        }
+        public void DestroyWhatTheTestMade() => objects.DestroyAll();
 
         static T Field<T>(object target, string name) => (T)target.GetType().GetField(name, BindingFlags.Instance | BindingFlags.NonPublic).GetValue(target);
 
@@ -30,12 +26,10 @@ namespace HeadGait.Tests
         [Test]
         public void ASetupErrorAndTheDataFolderAreShownInTheHeadset()
         {
-            var study = new GameObject("Study");
-            made.Add(study);
+            var study = objects.New("Study");
             var runner = study.AddComponent<StudyRunner>(); // no Avatar Condition Switcher: a setup error
             Assert.That(runner.SetupError, Is.Not.Null);
-            var panelObject = new GameObject("SSQ Panel");
-            made.Add(panelObject);
+            var panelObject = objects.New("SSQ Panel");
             var panel = panelObject.AddComponent<SsqPanel>();
             panel.GetType().GetField("runner", BindingFlags.Instance | BindingFlags.NonPublic).SetValue(panel, runner);
             Call(panel, "Start");

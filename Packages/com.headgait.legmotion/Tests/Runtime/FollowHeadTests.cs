@@ -14,26 +14,15 @@ namespace HeadGait.Tests
     {
         const float Frame = 1f / 72f;
 
-        readonly List<GameObject> made = new List<GameObject>();
-
-        GameObject New(string name)
-        {
-            var go = new GameObject(name);
-            made.Add(go);
-            return go;
-        }
+        readonly TestObjects objects = new TestObjects();
 
         [TearDown]
-        public void DestroyWhatTheTestMade()
-        {
-            foreach (var go in made) UnityEngine.Object.Destroy(go);
-            made.Clear();
-        }
+        public void DestroyWhatTheTestMade() => objects.DestroyAll();
 
         (FollowHead follow, Transform head) Make(float floorHeight = 0, float positionSmoothing = 0, float headingSmoothing = 0)
         {
-            var head = New("Head").transform;
-            var follow = New("Avatar").AddComponent<FollowHead>();
+            var head = objects.New("Head").transform;
+            var follow = objects.New("Avatar").AddComponent<FollowHead>();
             follow.Head = head;
             follow.FloorHeight = floorHeight;
             follow.PositionSmoothing = positionSmoothing;
@@ -153,7 +142,7 @@ namespace HeadGait.Tests
         public void ALostHeadPoseIsIgnoredAndTheFeetStandOnTheFloorObject()
         {
             var (follow, head) = Make(floorHeight: 0.05f);
-            var floor = New("XR Origin").transform;
+            var floor = objects.New("XR Origin").transform;
             floor.position = new Vector3(0, 1.2f, 0);
             follow.Floor = floor;
 

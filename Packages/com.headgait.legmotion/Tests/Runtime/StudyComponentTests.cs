@@ -12,14 +12,7 @@ namespace HeadGait.Tests
     public class StudyComponentTests
     {
         string folder;
-        readonly List<GameObject> made = new List<GameObject>();
-
-        GameObject New(string name)
-        {
-            var go = new GameObject(name);
-            made.Add(go);
-            return go;
-        }
+        readonly TestObjects objects = new TestObjects();
 
         [SetUp]
         public void MakeFolder() => folder = Path.Combine(Path.GetTempPath(), "headgait-keys-" + Guid.NewGuid().ToString("N"));
@@ -28,8 +21,7 @@ namespace HeadGait.Tests
         public void RemoveFolderAndObjects()
         {
             if (Directory.Exists(folder)) Directory.Delete(folder, true);
-            foreach (var go in made) UnityEngine.Object.Destroy(go);
-            made.Clear();
+            objects.DestroyAll();
         }
 
         [Test]
@@ -76,9 +68,9 @@ namespace HeadGait.Tests
         [Test]
         public void TheSwitcherShowsOneConditionsAvatarAndHidesTheRest()
         {
-            var block = New("Block Avatar");
-            var humanoid = New("Humanoid Avatar");
-            var switcher = New("Avatars").AddComponent<AvatarConditionSwitcher>();
+            var block = objects.New("Block Avatar");
+            var humanoid = objects.New("Humanoid Avatar");
+            var switcher = objects.New("Avatars").AddComponent<AvatarConditionSwitcher>();
             switcher.Configure(new List<AvatarCondition>
             {
                 new AvatarCondition { condition = StudyConfig.NoAvatar },
@@ -107,7 +99,7 @@ namespace HeadGait.Tests
         {
             // A standalone headset has no Documents folder: persistentDataPath is where the application may write and what
             // `adb pull` copies off it. The runner wakes as it is added (the operator view shows the folder it chose).
-            var runner = New("Study").AddComponent<StudyRunner>();
+            var runner = objects.New("Study").AddComponent<StudyRunner>();
             string expected = Path.Combine(Application.persistentDataPath, "HeadGait Study");
             Assert.That(runner.DataFolder, Is.EqualTo(expected));
             Assert.That(runner.Operator, Is.Not.Null);
