@@ -7,10 +7,85 @@ using System;
 
 namespace UnityEngine
 {
-    // Runtime/Export/Scripting/UnityEngineObject.bindings.cs
+    // Runtime/Export/Scripting/UnityEngineObject.bindings.cs. A destroyed object stays a live C# reference but compares
+    // equal to null (operator ==, CompareBaseObjects / IsNativeObjectAlive) and is false as a bool (implicit operator bool).
     public class Object
     {
-        public string name { get; set; } = "";
+        string objectName = "";
+
+        // A component's name is its GameObject's (Object.name, native GetName on the GameObject for components).
+        public string name
+        {
+            get => this is Component c && c.owner != null ? c.owner.name : objectName;
+            set
+            {
+                if (this is Component c && c.owner != null) c.owner.name = value;
+                else objectName = value;
+            }
+        }
+
+        // The native object is gone (Destroy at the frame's end, DestroyImmediate at once).
+        internal bool destroyed;
+        // Destroy was called; the object lives until the frame ends (UnityEngineObject.bindings.cs, Destroy: "Actual object
+        // destruction is always delayed until after the current Update loop").
+        internal bool destroyPending;
+
+        static bool CompareBaseObjects(Object lhs, Object rhs)
+        {
+            bool lhsNull = ReferenceEquals(lhs, null) || lhs.destroyed;
+            bool rhsNull = ReferenceEquals(rhs, null) || rhs.destroyed;
+            if (lhsNull && rhsNull) return true;
+            if (lhsNull || rhsNull) return false;
+            return ReferenceEquals(lhs, rhs);
+        }
+
+        public static bool operator ==(Object x, Object y) => CompareBaseObjects(x, y);
+        public static bool operator !=(Object x, Object y) => !CompareBaseObjects(x, y);
+        public static implicit operator bool(Object exists) => !CompareBaseObjects(exists, null);
+        public override bool Equals(object other) => other is Object o ? CompareBaseObjects(this, o) : other == null && destroyed;
+        public override int GetHashCode() => System.Runtime.CompilerServices.RuntimeHelpers.GetHashCode(this);
+
+        // Destroy(Object obj, float t = 0.0F): marked now, destroyed when the frame ends (FrameLoop.EndFrame here).
+        public static void Destroy(Object obj, float t = 0.0F)
+        {
+            if (obj == null || obj.destroyPending) return;
+            obj.destroyPending = true;
+            FrameLoop.DestroyAtFrameEnd(obj);
+        }
+
+        // DestroyImmediate(Object obj, bool allowDestroyingAssets = false): destroyed at once.
+        public static void DestroyImmediate(Object obj, bool allowDestroyingAssets = false)
+        {
+            if (obj == null) return;
+            obj.DestroyNow();
+        }
+
+        // What destruction does to this kind of object (a GameObject its components and children, a component its messages).
+        internal virtual void DestroyNow() => destroyed = true;
+    }
+
+    // The stand-ins' frame: Destroy takes effect when it ends. Unity's player loop runs this natively; here [UnityTest]'s
+    // stand-in ends a frame at each yield (UnityEngine.TestRunner.cs).
+    internal static class FrameLoop
+    {
+        static readonly System.Collections.Generic.List<Object> pending = new System.Collections.Generic.List<Object>();
+
+        internal static void DestroyAtFrameEnd(Object obj)
+        {
+            lock (pending) pending.Add(obj);
+        }
+
+        internal static void EndFrame()
+        {
+            Object[] now;
+            lock (pending)
+            {
+                now = pending.ToArray();
+                pending.Clear();
+            }
+            foreach (var o in now)
+                if (!o.destroyed) o.DestroyNow();
+        }
     }
 
     // Runtime/Export/Scripting/Component.bindings.cs
@@ -21,29 +96,92 @@ namespace UnityEngine
 
         public Transform transform => this is Transform t ? t : owner?.transform;
         public GameObject gameObject => owner;
-        public T GetComponent<T>() => default;
-        public T GetComponentInChildren<T>() => default;
+        // Component.bindings.cs: GetComponent<T>() and GetComponentInChildren<T>() ask the GameObject.
+        public T GetComponent<T>() => owner != null ? owner.GetComponent<T>() : default;
+        public T GetComponentInChildren<T>() => owner != null ? owner.GetComponentInChildren<T>() : default;
+        public T GetComponentInChildren<T>(bool includeInactive) => owner != null ? owner.GetComponentInChildren<T>(includeInactive) : default;
+
+        internal override void DestroyNow()
+        {
+            if (destroyed) return;
+            if (this is Transform) throw new InvalidOperationException("Destroying the transform component is not allowed."); // Unity logs this and keeps it
+            owner?.RemoveComponent(this);
+            base.DestroyNow();
+        }
     }
 
-    // Runtime/Export/Scripting/Behaviour.bindings.cs
+    // Runtime/Export/Scripting/Behaviour.bindings.cs: enabled; isActiveAndEnabled. Toggling enabled on an active
+    // GameObject sends OnEnable / OnDisable (MonoBehaviour messages, Manual "Order of execution for event functions").
     public class Behaviour : Component
     {
-        public bool enabled { get; set; } = true;
+        bool isEnabled = true;
+
+        public bool enabled
+        {
+            get => isEnabled;
+            set
+            {
+                if (isEnabled == value) return;
+                isEnabled = value;
+                if (owner == null || !owner.activeInHierarchy || !awoken || destroyed) return;
+                Messages.Send(this, value ? "OnEnable" : "OnDisable");
+            }
+        }
+
+        public bool isActiveAndEnabled => isEnabled && owner != null && owner.activeInHierarchy && !destroyed;
+
+        // Awake has run (it runs once, when the GameObject is first active).
+        internal bool awoken;
+
+        internal override void DestroyNow()
+        {
+            if (destroyed) return;
+            bool wasActive = isActiveAndEnabled && awoken;
+            if (wasActive) Messages.Send(this, "OnDisable");
+            if (awoken) Messages.Send(this, "OnDestroy");
+            base.DestroyNow();
+        }
     }
 
-    // Runtime/Export/Scripting/MonoBehaviour.bindings.cs
+    // Runtime/Export/Scripting/MonoBehaviour.bindings.cs. Unity calls the message methods (Awake, OnEnable, OnDisable,
+    // OnDestroy) by name whatever their access; a class inherits its base classes' (Manual "MonoBehaviour").
     public class MonoBehaviour : Behaviour { }
+
+    internal static class Messages
+    {
+        internal static void Send(object target, string message)
+        {
+            for (var type = target.GetType(); type != null && type != typeof(MonoBehaviour); type = type.BaseType)
+            {
+                var m = type.GetMethod(message, System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public
+                    | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.DeclaredOnly, null, Type.EmptyTypes, null);
+                if (m == null) continue;
+                try
+                {
+                    m.Invoke(target, null);
+                }
+                catch (System.Reflection.TargetInvocationException e)
+                {
+                    System.Runtime.ExceptionServices.ExceptionDispatchInfo.Capture(e.InnerException).Throw();
+                }
+                return;
+            }
+        }
+    }
 
     // Runtime/Export/Scripting/ScriptableObject.bindings.cs
     public class ScriptableObject : Object { }
 
-    // Runtime/Export/Scripting/TextAsset.cs
+    // Runtime/Export/Scripting/TextAsset.cs: TextAsset(string text), TextAsset(ReadOnlySpan<byte> bytes) (Unity 2022.2+), text
+    // decodes the bytes as UTF-8 (DecodeString), bytes are the raw contents.
     public class TextAsset : Object
     {
-        public TextAsset(string text) { this.text = text; }
-        public string text { get; }
-        // Runtime/Export/Scripting/TextAsset.bindings.cs: public extern byte[] bytes { get; }
-        public byte[] bytes => System.Text.Encoding.UTF8.GetBytes(text);
+        readonly byte[] data;
+        public TextAsset(string text) { data = System.Text.Encoding.UTF8.GetBytes(text ?? ""); }
+        public TextAsset(ReadOnlySpan<byte> bytes) { data = bytes.ToArray(); }
+        public string text => System.Text.Encoding.UTF8.GetString(data);
+        // Runtime/Export/Scripting/TextAsset.bindings.cs: public extern byte[] bytes { get; } (a copy per call)
+        public byte[] bytes => (byte[])data.Clone();
     }
 
     // Runtime/Export/Debug/Debug.bindings.cs
@@ -72,6 +210,18 @@ namespace UnityEngine
     public class Application
     {
         public static string dataPath => "Assets";
+
+        // Application.bindings.cs: persistentDataPath { get; } (per platform; ScriptReference Application.persistentDataPath).
+        // The stand-in: a folder of its own under the temporary folder, made on first use.
+        public static string persistentDataPath
+        {
+            get
+            {
+                string path = System.IO.Path.Combine(System.IO.Path.GetTempPath(), "headgait-standin-persistent-data");
+                System.IO.Directory.CreateDirectory(path);
+                return path;
+            }
+        }
     }
 
     // Runtime/Export/Graphics/GraphicsEnums.cs (decompiled builds also list Unknown = 0); LandscapeLeft is counter-clockwise from portrait.

@@ -1,6 +1,7 @@
 // Stand-ins for the Input System (package com.unity.inputsystem 1.7+) members the head source uses. Signatures follow
 // repo Unity-Technologies/InputSystem, Packages/com.unity.inputsystem/InputSystem/<file named beside each type>;
-// bodies are empty: tests drive the plain classes in Runtime/Components/Sensors, not these.
+// bodies are empty except where the head reader depends on them (child controls, the device list): tests drive the
+// plain classes in Runtime/Components/Sensors.
 using System;
 using System.Collections;
 using System.Collections.Generic;
@@ -13,8 +14,31 @@ namespace UnityEngine.InputSystem
     // Controls/InputControl.cs
     public abstract class InputControl
     {
-        public string name => "";
-        public TControl TryGetChildControl<TControl>(string path) where TControl : InputControl => null;
+        // Set by the stand-ins' tests (Unity builds controls from layouts).
+        internal string controlName = "";
+        internal readonly List<InputControl> childControls = new List<InputControl>();
+
+        public string name => controlName;
+
+        // TryGetChildControl(string path): InputControlPath.TryFindChild; here a direct child by name, case-insensitive as
+        // control paths are. ArgumentNullException for a null or empty path.
+        public InputControl TryGetChildControl(string path)
+        {
+            if (string.IsNullOrEmpty(path)) throw new ArgumentNullException(nameof(path));
+            foreach (var c in childControls)
+                if (string.Equals(c.controlName, path, StringComparison.OrdinalIgnoreCase)) return c;
+            return null;
+        }
+
+        // TryGetChildControl<TControl>(string path): null when there is no such child, InvalidOperationException when the
+        // child is of another type ("Expected control '...' to be of type '...' but is of type '...' instead!").
+        public TControl TryGetChildControl<TControl>(string path) where TControl : InputControl
+        {
+            var control = TryGetChildControl(path);
+            if (control == null) return null;
+            return control as TControl ?? throw new InvalidOperationException(
+                $"Expected control '{path}' to be of type '{typeof(TControl).Name}' but is of type '{control.GetType().Name}' instead!");
+        }
     }
 
     // Controls/InputControl.cs (InputControl<TValue>)
@@ -94,7 +118,9 @@ namespace UnityEngine.InputSystem
     {
         public static InputEventListener onEvent { get => default; set { } }
         public static event Action<InputDevice, InputDeviceChange> onDeviceChange { add { } remove { } }
-        public static ReadOnlyArray<InputDevice> devices => default;
+        // The devices the stand-ins' tests added (Unity: every device the runtime reported).
+        internal static readonly List<InputDevice> addedDevices = new List<InputDevice>();
+        public static ReadOnlyArray<InputDevice> devices => new ReadOnlyArray<InputDevice>(addedDevices.ToArray());
         public static InputSettings settings { get; set; }
         public static void EnableDevice(InputDevice device) { }
         public static void DisableDevice(InputDevice device, bool keepSendingEvents = false) { }
@@ -168,9 +194,14 @@ namespace UnityEngine.InputSystem.Utilities
     // Utilities/ReadOnlyArray.cs
     public struct ReadOnlyArray<TValue> : IReadOnlyList<TValue>
     {
-        public int Count => 0;
-        public TValue this[int index] => throw new IndexOutOfRangeException();
-        public IEnumerator<TValue> GetEnumerator() { yield break; }
+        readonly TValue[] array;
+        public ReadOnlyArray(TValue[] array) { this.array = array; }
+        public int Count => array?.Length ?? 0;
+        public TValue this[int index] => array != null ? array[index] : throw new IndexOutOfRangeException();
+        public IEnumerator<TValue> GetEnumerator()
+        {
+            for (int i = 0; i < Count; i++) yield return array[i];
+        }
         IEnumerator IEnumerable.GetEnumerator() => GetEnumerator();
     }
 }

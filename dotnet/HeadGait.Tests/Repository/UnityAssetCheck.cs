@@ -9,64 +9,6 @@ using YamlDotNet.RepresentationModel;
 
 namespace HeadGait.Tests
 {
-    /// <summary>One object of a Unity YAML file: the `--- !u!CLASS &amp;FILEID [stripped]` header and its parsed body.</summary>
-    public sealed class UnityObject
-    {
-        public int ClassId;
-        public long FileId;
-        public bool Stripped;
-        public string Type;
-        public YamlMappingNode Body;
-
-        public string Scalar(string key) => Body.Children.TryGetValue(new YamlScalarNode(key), out var n) && n is YamlScalarNode s ? s.Value ?? "" : null;
-        public YamlNode Node(string key) => Body.Children.TryGetValue(new YamlScalarNode(key), out var n) ? n : null;
-    }
-
-    /// <summary>
-    /// Unity's text assets are YAML streams whose documents carry tags (`--- !u!74 &amp;7400000`, class ID and local fileID)
-    /// and may be `stripped` (a prefab instance's object, holding only its link to the source), which YAML parsers reject.
-    /// The file is split on those headers first, then each body is parsed with YamlDotNet.
-    /// </summary>
-    public static class UnityYamlFile
-    {
-        static readonly Regex Header = new Regex(@"^--- !u!(\d+) &(-?\d+)( stripped)?\s*$", RegexOptions.Multiline);
-
-        public static List<UnityObject> Parse(string text, string file)
-        {
-            text = text.Replace("\r\n", "\n");
-            var matches = Header.Matches(text);
-            if (matches.Count == 0) throw new FormatException($"{file}: no '--- !u!CLASS &ID' document");
-            var list = new List<UnityObject>();
-            for (int i = 0; i < matches.Count; i++)
-            {
-                var m = matches[i];
-                int start = m.Index + m.Length;
-                int end = i + 1 < matches.Count ? matches[i + 1].Index : text.Length;
-                var stream = new YamlStream();
-                try
-                {
-                    stream.Load(new StringReader(text.Substring(start, end - start)));
-                }
-                catch (YamlDotNet.Core.YamlException e)
-                {
-                    throw new FormatException($"{file}: document &{m.Groups[2].Value} is not valid YAML ({e.Message})");
-                }
-                if (stream.Documents.Count != 1 || !(stream.Documents[0].RootNode is YamlMappingNode root) || root.Children.Count != 1)
-                    throw new FormatException($"{file}: document &{m.Groups[2].Value} is not one 'Type:' mapping");
-                var entry = root.Children.First();
-                list.Add(new UnityObject
-                {
-                    ClassId = int.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture),
-                    FileId = long.Parse(m.Groups[2].Value, CultureInfo.InvariantCulture),
-                    Stripped = m.Groups[3].Success,
-                    Type = ((YamlScalarNode)entry.Key).Value,
-                    Body = entry.Value as YamlMappingNode ?? new YamlMappingNode(),
-                });
-            }
-            return list;
-        }
-    }
-
     /// <summary>
     /// Checks the Unity assets of the package and its samples without Unity: every reference resolves, scripts are what
     /// their references say, the controller matches the core's states, parameters and transitions, and the clips' feet land
@@ -351,8 +293,9 @@ namespace HeadGait.Tests
             foreach (var l in GaitClips.All)
                 if (!stateOf.ContainsValue(l)) problems.Add($"{file}: no state for {l} ('{GaitClips.Name(l)}')");
 
-            // Transitions: exactly LocomotionTransitions, each on GaitState == target.
-            var expected = new HashSet<string>(LocomotionTransitions.All.Select(t => $"{t.From}->{t.To}")) { $"Any->{LocomotionTransitions.FromAnyState}" };
+            // Transitions: every state to every other (GaitControllerYaml.Transitions), each on GaitState == target with its
+            // interruption source, so no state the core passes through between two frames can strand the Animator.
+            var expected = new HashSet<string>(GaitControllerYaml.Transitions.Select(t => $"{t.From}->{t.To}"));
             var found = new HashSet<string>();
             void Transitions(string from, YamlNode list)
             {
@@ -376,12 +319,14 @@ namespace HeadGait.Tests
                                  && Get(conditions[0], "m_EventTreshold") == ((int)to).ToString(CultureInfo.InvariantCulture);
                     if (!right) problems.Add($"{file}: transition {key} is not taken on {AnimatorParameters.State} == {(int)to}");
                     if (t.Scalar("m_HasExitTime") != "0") problems.Add($"{file}: transition {key} waits for an exit time");
+                    string source = GaitControllerYaml.InterruptionSource(to).ToString(CultureInfo.InvariantCulture);
+                    if (t.Scalar("m_InterruptionSource") != source) problems.Add($"{file}: transition {key} has interruption source {t.Scalar("m_InterruptionSource")}, not {source}");
                 }
             }
             foreach (var s in states.Where(s => stateOf.ContainsKey(s.FileId))) Transitions(stateOf[s.FileId].ToString(), s.Node("m_Transitions"));
             foreach (var m in docs.Where(d => d.ClassId == 1107)) Transitions("Any", m.Node("m_AnyStateTransitions"));
-            foreach (var e in expected.Except(found)) problems.Add($"{file}: transition {e} (LocomotionTransitions) is missing");
-            foreach (var e in found.Except(expected)) problems.Add($"{file}: transition {e} is not one the core's state machine makes");
+            foreach (var e in expected.Except(found)) problems.Add($"{file}: transition {e} is missing");
+            foreach (var e in found.Except(expected)) problems.Add($"{file}: transition {e} is not one of the controller's (every state to every other)");
         }
 
         /// <summary>An override controller replaces each clip of its controller with a clip of the same name.</summary>

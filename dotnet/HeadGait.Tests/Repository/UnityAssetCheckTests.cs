@@ -86,7 +86,7 @@ namespace HeadGait.Tests
                 Assert.That(problems, Does.Contain("parameter Stride is not in AnimatorParameters"));
                 Assert.That(problems, Does.Contain("does not take its normalized time from StridePhase"));
                 Assert.That(problems, Does.Contain($"local fileID {walkingState} resolves to nothing"));
-                Assert.That(problems, Does.Contain("transition StartWalkLeft->Walking (LocomotionTransitions) is missing"));
+                Assert.That(problems, Does.Contain("transition StartWalkLeft->Walking is missing"));
                 Assert.That(problems, Does.Contain("field 'animator' is not declared in HeadImuSource.cs"));
                 Assert.That(problems, Does.Contain("not a .cs file declaring class Misnamed"));
                 Assert.That(problems, Does.Contain("guid 0123456789abcdef0123456789abcdef resolves to no .meta"));

@@ -221,5 +221,52 @@ namespace HeadGait.Tests
             sentis.Dispose();
             Assert.That(model.standInWorkersAlive, Is.EqualTo(0), "Dispose frees the worker");
         }
+
+        static void SetField(object target, string field, object value)
+        {
+            var f = target.GetType().GetField(field, System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.NonPublic);
+            Assert.That(f, Is.Not.Null, $"{target.GetType().Name}.{field}");
+            f.SetValue(target, value);
+        }
+
+        /// <summary>
+        /// In a scene the Sentis component (default execution order) is enabled before the animator's Awake (order 100):
+        /// asking the animator for its pipeline then builds it, which raises Rebuilt into the handler just subscribed. Only
+        /// one worker may be left, and disabling must free it.
+        /// </summary>
+        [Test]
+        public void EnabledBeforeTheAnimatorsAwakeItMakesOneWorkerAndFreesIt()
+        {
+            string folder = SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory);
+            var models = Models;
+            var model = OnnxLike(Create(models, "blstm"));
+            model.standInRun = RunWith(Create(models, "blstm"), null);
+
+            var avatar = new UnityEngine.GameObject("Avatar");
+            try
+            {
+                avatar.SetActive(false); // as a scene loads: both components present before either wakes
+                var animator = avatar.AddComponent<GaitLegAnimator>();
+                SetField(animator, "classifier", GaitClassifierKind.Blstm);
+                SetField(animator, "blstmModel", new UnityEngine.TextAsset(System.IO.File.ReadAllBytes(System.IO.Path.Combine(folder, GaitModels.BlstmFile))) { name = "blstm" });
+                SetField(animator, "corTemplate", new UnityEngine.TextAsset(System.IO.File.ReadAllText(System.IO.Path.Combine(folder, GaitModels.CorrelationFile))) { name = "cor_template" });
+                var sentis = avatar.AddComponent<SentisGaitModels>();
+                SetField(sentis, "blstmModel", new global::Unity.InferenceEngine.ModelAsset { name = "blstm", standInModel = model });
+
+                avatar.SetActive(true);
+                Assert.That(animator.Pipeline.Classifier, Is.InstanceOf<BlstmClassifier>());
+                Assert.That(sentis.Evaluator, Is.Not.Null, "Sentis runs the BLSTM");
+                Assert.That(model.standInWorkersAlive, Is.EqualTo(1), "one worker, none left behind by the nested rebuild");
+
+                animator.Build(); // a rebuild replaces the worker
+                Assert.That(model.standInWorkersAlive, Is.EqualTo(1));
+                sentis.enabled = false;
+                Assert.That(model.standInWorkersAlive, Is.EqualTo(0), "disabling frees the worker");
+            }
+            finally
+            {
+                UnityEngine.Object.DestroyImmediate(avatar);
+            }
+        }
     }
 }

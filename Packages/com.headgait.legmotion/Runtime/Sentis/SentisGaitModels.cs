@@ -35,6 +35,9 @@ namespace HeadGait.Unity
                 Debug.LogWarning("HeadGait: Sentis models need a Gait Leg Animator on the same GameObject.", this);
                 return;
             }
+            // Enabled before the animator's Awake (its execution order is later), asking for the pipeline builds it and raises
+            // Rebuilt: build it before listening, so the one Attach below makes the only worker.
+            _ = gaitAnimator.Runner;
             gaitAnimator.Rebuilt += Attach;
             Attach();
         }

@@ -11,7 +11,8 @@ namespace HeadGait.Unity
     /// than a 16-row grid), with the four ratings, previous/next item and Done. XR controllers press it through the XR
     /// Interaction Toolkit (a TrackedDeviceGraphicRaycaster on the panel's canvas, an XRUIInputModule on the
     /// EventSystem; both are added when missing). It edits the same <see cref="SsqForm"/> as the operator's keyboard,
-    /// and shows itself only while the current step is an SSQ. Built from code, so the sample needs no UI assets.
+    /// and shows itself while the current step is an SSQ or the study has an error (a standalone headset shows no operator
+    /// view, so its errors and the data folder must appear here). Built from code, so the sample needs no UI assets.
     /// </summary>
     [AddComponentMenu("HeadGait/Study/SSQ Panel (XR)")]
     public sealed class SsqPanel : MonoBehaviour
@@ -25,11 +26,12 @@ namespace HeadGait.Unity
         static readonly Color Chosen = new Color(0.35f, 0.75f, 0.45f, 1f);
 
         GameObject canvasObject;
-        Text title, status;
+        Text title, status, folder;
         readonly Image[] ratingImages = new Image[SimulatorSicknessQuestionnaire.MaxRating + 1];
         Button done;
         Font font;
         int shownVersion = -1;
+        string shownProblem;
 
         void Start()
         {
@@ -71,7 +73,8 @@ namespace HeadGait.Unity
             ButtonAt("< Previous", new Vector2(-300, -80), new Vector2(240, 80), () => Form?.MoveFocus(-1));
             ButtonAt("Next >", new Vector2(300, -80), new Vector2(240, 80), () => Form?.MoveFocus(1));
             done = ButtonAt("Done", new Vector2(0, -80), new Vector2(240, 80), () => runner.Operator?.Do(OperatorCommand.Next));
-            status = Label("", new Vector2(0, -190), new Vector2(860, 70), 30);
+            status = Label("", new Vector2(0, -180), new Vector2(860, 70), 30);
+            folder = Label("Data folder: " + runner.DataFolder, new Vector2(0, -235), new Vector2(860, 40), 20);
         }
 
         SsqForm Form => runner != null && runner.Operator != null && runner.Operator.SsqOpen ? runner.Operator.Ssq : null;
@@ -80,15 +83,24 @@ namespace HeadGait.Unity
         {
             if (canvasObject == null) return;
             var form = Form;
-            canvasObject.SetActive(form != null);
-            if (form == null || form.Version == shownVersion) return;
+            string problem = runner.SetupError ?? runner.Operator?.Error;
+            canvasObject.SetActive(form != null || problem != null);
+            if ((form == null || form.Version == shownVersion) && problem == shownProblem) return;
+            shownProblem = problem;
+            if (form == null)
+            {
+                title.text = "Study stopped: ask the operator";
+                status.text = "ERROR: " + problem;
+                return;
+            }
             shownVersion = form.Version;
             int item = form.Focus;
             title.text = $"{item + 1} of {SimulatorSicknessQuestionnaire.ItemCount}: {SimulatorSicknessQuestionnaire.Label((SsqItem)item)}";
             int? rating = form.RatingOf(item);
             for (int r = 0; r < ratingImages.Length; r++) ratingImages[r].color = rating == r ? Chosen : Idle;
             done.interactable = form.IsComplete;
-            status.text = form.IsComplete ? "All rated. Press Done." : $"{form.AnsweredCount} of {SimulatorSicknessQuestionnaire.ItemCount} rated";
+            status.text = problem != null ? "ERROR: " + problem
+                : form.IsComplete ? "All rated. Press Done." : $"{form.AnsweredCount} of {SimulatorSicknessQuestionnaire.ItemCount} rated";
         }
 
         Text Label(string text, Vector2 position, Vector2 extent, int fontSize)

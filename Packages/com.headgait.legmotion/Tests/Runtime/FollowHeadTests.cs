@@ -14,10 +14,15 @@ namespace HeadGait.Tests
     {
         const float Frame = 1f / 72f;
 
-        static (FollowHead follow, Transform head) Make(float floorHeight = 0, float positionSmoothing = 0, float headingSmoothing = 0)
+        readonly TestObjects objects = new TestObjects();
+
+        [TearDown]
+        public void DestroyWhatTheTestMade() => objects.DestroyAll();
+
+        (FollowHead follow, Transform head) Make(float floorHeight = 0, float positionSmoothing = 0, float headingSmoothing = 0)
         {
-            var head = new GameObject("Head").transform;
-            var follow = new GameObject("Avatar").AddComponent<FollowHead>();
+            var head = objects.New("Head").transform;
+            var follow = objects.New("Avatar").AddComponent<FollowHead>();
             follow.Head = head;
             follow.FloorHeight = floorHeight;
             follow.PositionSmoothing = positionSmoothing;
@@ -137,7 +142,7 @@ namespace HeadGait.Tests
         public void ALostHeadPoseIsIgnoredAndTheFeetStandOnTheFloorObject()
         {
             var (follow, head) = Make(floorHeight: 0.05f);
-            var floor = new GameObject("XR Origin").transform;
+            var floor = objects.New("XR Origin").transform;
             floor.position = new Vector3(0, 1.2f, 0);
             follow.Floor = floor;
 

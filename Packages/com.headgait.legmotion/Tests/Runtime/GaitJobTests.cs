@@ -75,6 +75,13 @@ namespace HeadGait.Tests
             // The plain pipeline's frame after each sample count, to check what each video frame shows.
             var plainLatest = new AnimatorFrame[samples.Count + 1];
             plainLatest[0] = plain.Latest;
+            var plainFrames = new HashSet<string>();
+            var plainTransients = new List<LocomotionState>();
+            plain.FrameProduced += (p, f) =>
+            {
+                plainFrames.Add(Describe(default, f));
+                if (IsStartOrFinish(f.State) && (plainTransients.Count == 0 || plainTransients[plainTransients.Count - 1] != f.State)) plainTransients.Add(f.State);
+            };
             for (int i = 0; i < samples.Count; i++)
             {
                 plain.Push(samples[i]);
@@ -83,6 +90,8 @@ namespace HeadGait.Tests
 
             var runner = new GaitBatchRunner(new GaitPipeline(Cor()), initialCapacity: 4);
             var actual = Record(runner.Pipeline);
+            var shownTransients = new List<LocomotionState>();
+            long held = 0;
             using (var scheduler = new GaitJobScheduler(runner))
             {
                 int handed = 0, handedBeforeLastStep = 0;
@@ -92,9 +101,17 @@ namespace HeadGait.Tests
                     double now = frame / (double)fps;
                     while (handed < samples.Count && samples[handed].Time <= now) runner.Push(samples[handed++]);
                     runner.Step(scheduler);
-                    // What the avatar shows this frame: the pipeline's state after the samples handed over last frame.
-                    Assert.That(Describe(default, runner.Latest), Is.EqualTo(Describe(default, plainLatest[handedBeforeLastStep])),
-                        $"frame {frame} at {fps} fps");
+                    // What the avatar shows this frame: the pipeline's state after the samples handed over last frame, or a
+                    // Start/Finish frame the batch entered and left again, held for a frame of its own.
+                    string shown = Describe(default, runner.Latest);
+                    if (shown != Describe(default, plainLatest[handedBeforeLastStep]))
+                    {
+                        Assert.That(IsStartOrFinish(runner.Latest.State) && plainFrames.Contains(shown), Is.True,
+                            $"frame {frame} at {fps} fps shows {runner.Latest}, neither the latest frame nor a held Start/Finish frame");
+                        held++;
+                    }
+                    var s = runner.Latest.State;
+                    if (IsStartOrFinish(s) && (shownTransients.Count == 0 || shownTransients[shownTransients.Count - 1] != s)) shownTransients.Add(s);
                     handedBeforeLastStep = handed;
                 }
                 Assert.That(handed, Is.EqualTo(samples.Count));
@@ -106,6 +123,43 @@ namespace HeadGait.Tests
             Assert.That(actual, Is.EqualTo(expected));
             Assert.That(runner.Windows, Is.EqualTo(plain.Windows));
             Assert.That(runner.Latest.State, Is.EqualTo(plain.Latest.State));
+            Assert.That(plainTransients, Has.Count.GreaterThanOrEqualTo(3), "the stream starts twice and stops once");
+            Assert.That(shownTransients, Is.EqualTo(plainTransients), "every Start and Finish state the core entered was shown for a frame at least");
+            Assert.That(runner.HeldFrames, Is.EqualTo(held));
+        }
+
+        static bool IsStartOrFinish(LocomotionState s) => s != LocomotionState.Standing && s != LocomotionState.Walking;
+
+        /// <summary>The core's Start Walk often lasts one 10 ms window: a frame whose batch enters and leaves it shows it first.</summary>
+        [Test]
+        public void AStartWalkEnteredAndLeftWithinOneBatchIsShownForOneFrame()
+        {
+            var samples = Stream(irregular: false);
+            // Find the batch boundary that puts the core's whole Start Walk inside one batch, then hand the stream over in two batches.
+            var probe = new GaitPipeline(Cor());
+            int startSample = -1, walkingSample = -1;
+            for (int i = 0; i < samples.Count && walkingSample < 0; i++)
+            {
+                probe.Push(samples[i]);
+                if (startSample < 0 && (probe.Latest.State == LocomotionState.StartWalkLeft || probe.Latest.State == LocomotionState.StartWalkRight)) startSample = i;
+                if (startSample >= 0 && probe.Latest.State == LocomotionState.Walking) walkingSample = i;
+            }
+            Assert.That(walkingSample, Is.GreaterThan(startSample).And.GreaterThan(0), "the stream starts walking");
+
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            var scheduler = new InlineBatchScheduler(runner);
+            for (int i = 0; i < startSample - 1; i++) runner.Push(samples[i]);
+            runner.Step(scheduler);
+            runner.Step(scheduler);
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Standing));
+            for (int i = startSample - 1; i <= walkingSample; i++) runner.Push(samples[i]);
+            runner.Step(scheduler); // schedules the batch that starts and reaches Walking
+            runner.Step(scheduler);
+            Assert.That(runner.Latest.State, Is.Not.EqualTo(LocomotionState.Walking), "the Start Walk frame comes first");
+            Assert.That(runner.Latest.State == LocomotionState.StartWalkLeft || runner.Latest.State == LocomotionState.StartWalkRight, Is.True, $"shows {runner.Latest.State}");
+            runner.Step(scheduler);
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Walking), "then the batch's latest frame, with no new samples");
+            Assert.That(runner.HeldFrames, Is.EqualTo(1));
         }
 
         [Test]
@@ -175,6 +229,8 @@ namespace HeadGait.Tests
             runner.Step(scheduler);
             Assert.That(scheduler.Completes, Is.EqualTo(1));
             Assert.That(runner.Windows, Is.GreaterThan(200));
+            Assert.That(runner.HeldFrames, Is.EqualTo(1), "the batch started a walk: its Start Walk frame shows first");
+            runner.Step(scheduler);
             var shown = runner.Latest;
             for (int i = 0; i < 5; i++) runner.Step(scheduler);
             Assert.That(scheduler.Schedules, Is.EqualTo(1));
@@ -241,6 +297,8 @@ namespace HeadGait.Tests
             // Enabled again: the backlog is one batch, and the avatar walks on from the newest samples.
             var scheduler = new CountingScheduler(runner);
             runner.Step(scheduler);
+            runner.Step(scheduler);
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.StartWalkLeft).Or.EqualTo(LocomotionState.StartWalkRight), "the walk's start, held for a frame");
             runner.Step(scheduler);
             Assert.That(runner.Latest.Time, Is.EqualTo(last).Within(0.02));
             Assert.That(runner.Windows, Is.InRange(100, 201), "windows of the 2 s kept (100 Hz, after the first window fills), not of 14 s");

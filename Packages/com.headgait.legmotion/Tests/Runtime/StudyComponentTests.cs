@@ -12,14 +12,16 @@ namespace HeadGait.Tests
     public class StudyComponentTests
     {
         string folder;
+        readonly TestObjects objects = new TestObjects();
 
         [SetUp]
         public void MakeFolder() => folder = Path.Combine(Path.GetTempPath(), "headgait-keys-" + Guid.NewGuid().ToString("N"));
 
         [TearDown]
-        public void RemoveFolder()
+        public void RemoveFolderAndObjects()
         {
             if (Directory.Exists(folder)) Directory.Delete(folder, true);
+            objects.DestroyAll();
         }
 
         [Test]
@@ -66,9 +68,9 @@ namespace HeadGait.Tests
         [Test]
         public void TheSwitcherShowsOneConditionsAvatarAndHidesTheRest()
         {
-            var block = new GameObject("Block Avatar");
-            var humanoid = new GameObject("Humanoid Avatar");
-            var switcher = new GameObject("Avatars").AddComponent<AvatarConditionSwitcher>();
+            var block = objects.New("Block Avatar");
+            var humanoid = objects.New("Humanoid Avatar");
+            var switcher = objects.New("Avatars").AddComponent<AvatarConditionSwitcher>();
             switcher.Configure(new List<AvatarCondition>
             {
                 new AvatarCondition { condition = StudyConfig.NoAvatar },
@@ -90,6 +92,19 @@ namespace HeadGait.Tests
             Assert.That(switcher.Show("female-avatar"), Is.False, "an unknown condition shows nothing and says so");
             Assert.That(switcher.Shown, Is.Null);
             Assert.That(switcher.Missing(new[] { StudyConfig.BlockAvatar, "female-avatar" }), Is.EqualTo(new[] { "female-avatar" }));
+        }
+    
+        [Test]
+        public void WithNoFolderSetTheStudyWritesToTheApplicationsPersistentDataFolder()
+        {
+            // A standalone headset has no Documents folder: persistentDataPath is where the application may write and what
+            // `adb pull` copies off it. The runner wakes as it is added (the operator view shows the folder it chose).
+            var runner = objects.New("Study").AddComponent<StudyRunner>();
+            string expected = Path.Combine(Application.persistentDataPath, "HeadGait Study");
+            Assert.That(runner.DataFolder, Is.EqualTo(expected));
+            Assert.That(runner.Operator, Is.Not.Null);
+            Assert.That(runner.Operator.DataFolder, Is.EqualTo(expected));
+            Assert.That(runner.SetupError, Does.Contain("Avatar Condition Switcher"), "no switcher in this scene");
         }
     }
 }

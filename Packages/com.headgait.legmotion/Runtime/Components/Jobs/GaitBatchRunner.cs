@@ -17,6 +17,9 @@ namespace HeadGait.Unity
     /// Samples handed over while no frame runs (the component disabled, its source still pushing) wait in a backlog bounded
     /// to the newest <see cref="MaxBacklogSeconds"/> of sensor time, oldest dropped first (<see cref="DroppedBacklog"/>).
     /// The published frame is one frame behind the samples (the batch handed over this frame is read next frame).
+    /// A Start or Finish Walk state that the core entered and left within one batch (it often lasts a single 10 ms window)
+    /// is published for one frame of its own before the batch's latest frame, so the Animator sees every start and finish
+    /// (<see cref="HeldFrames"/>); otherwise it would see Standing -> Walking and never play the start clip.
     /// Not thread-safe beyond that split: call everything except ExecuteBatch from the main thread.
     /// </summary>
     public sealed class GaitBatchRunner
@@ -42,6 +45,7 @@ namespace HeadGait.Unity
         int batchCount;
 
         bool inFlight;
+        bool stepping;            // inside Step, which publishes after completing
         int generation;           // bumped by Reset: a batch of an older generation is discarded
         int batchGeneration;
         bool resetPipeline;       // Reset came while a batch ran: reset the pipeline before the next one
@@ -51,6 +55,17 @@ namespace HeadGait.Unity
         AnimatorFrame batchLatest;
         GaitPrediction batchPrediction;
         long batchWindows;
+        // The Start/Finish frames the batch entered, in order (bounded: more than a few in one frame is a stalled frame).
+        const int MaxHeld = 4;
+        readonly AnimatorFrame[] batchEntered = new AnimatorFrame[MaxHeld];
+        int batchEnteredCount;
+        LocomotionState batchState;
+
+        // Main thread: frames still to show one per frame before the newest one (a queue in a fixed array).
+        readonly AnimatorFrame[] held = new AnimatorFrame[MaxHeld];
+        int heldStart, heldCount;
+        AnimatorFrame newest;
+        GaitPrediction newestPrediction;
 
         public GaitBatchRunner(GaitPipeline pipeline, int initialCapacity = 256)
         {
@@ -59,7 +74,8 @@ namespace HeadGait.Unity
             pending = new ImuSample[initialCapacity];
             batch = new ImuSample[initialCapacity];
             sourceLag = pipeline.SourceLag;
-            Latest = AnimatorFrame.Standing(0);
+            Latest = newest = AnimatorFrame.Standing(0);
+            pipeline.FrameProduced += OnFrame;
         }
 
         /// <summary>The pipeline the batches run; read it only while <see cref="InFlight"/> is false.</summary>
@@ -70,6 +86,9 @@ namespace HeadGait.Unity
 
         /// <summary>The prediction behind <see cref="Latest"/>.</summary>
         public GaitPrediction LatestPrediction { get; private set; }
+
+        /// <summary>Start/Finish frames published for a frame of their own because the batch left them again (see the class summary).</summary>
+        public long HeldFrames { get; private set; }
 
         /// <summary>Windows classified by completed batches (one per 100 Hz grid step of sensor time).</summary>
         public long Windows { get; private set; }
@@ -146,18 +165,29 @@ namespace HeadGait.Unity
             generation++;
             if (inFlight) resetPipeline = true;
             else pipeline.Reset();
-            Latest = AnimatorFrame.Standing(0);
-            LatestPrediction = default;
+            Latest = newest = AnimatorFrame.Standing(0);
+            LatestPrediction = newestPrediction = default;
+            heldCount = 0;
         }
 
         /// <summary>
-        /// The frame's work (main thread): completes and publishes last frame's batch, then schedules the samples handed over
+        /// The frame's work (main thread): completes last frame's batch and publishes its latest frame (or a Start/Finish frame
+        /// it passed through, held for this one frame), then schedules the samples handed over
         /// since, if any. Never waits on anything scheduled in this call.
         /// </summary>
         public void Step(IGaitBatchScheduler scheduler)
         {
             if (scheduler == null) throw new ArgumentNullException(nameof(scheduler));
-            Complete(scheduler);
+            stepping = true;
+            try
+            {
+                Complete(scheduler);
+            }
+            finally
+            {
+                stepping = false;
+            }
+            ShowNext();
             if (pendingCount == 0) return;
             if (resetPipeline)
             {
@@ -184,20 +214,63 @@ namespace HeadGait.Unity
             scheduler.Complete();
             inFlight = false;
             if (batchGeneration != generation) return; // reset while it ran: its frames belong to the old stream
-            Latest = batchLatest;
-            LatestPrediction = batchPrediction;
+            LocomotionState shown = heldCount > 0 ? held[(heldStart + heldCount - 1) % MaxHeld].State : Latest.State;
+            for (int i = 0; i < batchEnteredCount && heldCount < MaxHeld; i++)
+            {
+                var f = batchEntered[i];
+                if (f.State == shown) continue;
+                held[(heldStart + heldCount++) % MaxHeld] = f;
+                shown = f.State;
+            }
+            // The newest frame shows the last one's state anyway.
+            if (heldCount > 0 && held[(heldStart + heldCount - 1) % MaxHeld].State == batchLatest.State) heldCount--;
+            newest = batchLatest;
+            newestPrediction = batchPrediction;
             Windows += batchWindows;
+            // Outside Step (on disable, before a rebuild) nothing waits for the next frame: show the newest frame now.
+            if (!stepping)
+            {
+                heldCount = 0;
+                ShowNext();
+            }
+        }
+
+        /// <summary>Publishes the oldest held Start/Finish frame, or else the newest frame.</summary>
+        void ShowNext()
+        {
+            if (heldCount > 0)
+            {
+                Latest = held[heldStart];
+                heldStart = (heldStart + 1) % MaxHeld;
+                heldCount--;
+                HeldFrames++;
+                return;
+            }
+            Latest = newest;
+            LatestPrediction = newestPrediction;
         }
 
         /// <summary>The batch itself (worker thread): every sample through the pipeline, in order.</summary>
         public void ExecuteBatch()
         {
             long before = pipeline.Windows;
+            batchState = pipeline.Latest.State;
+            batchEnteredCount = 0;
             pipeline.PushBatch(batch, batchCount); // a learned classifier scores the batch's windows in one evaluator call
             batchLatest = pipeline.Latest;
             batchPrediction = pipeline.LatestPrediction;
             batchWindows = pipeline.Windows - before;
             batchCount = 0;
+        }
+    
+
+        /// <summary>Each frame the batch's pipeline produces (worker thread): notes the Start/Finish states it enters.</summary>
+        void OnFrame(GaitPrediction prediction, AnimatorFrame frame)
+        {
+            if (frame.State == batchState) return;
+            batchState = frame.State;
+            bool transient = frame.State != LocomotionState.Standing && frame.State != LocomotionState.Walking;
+            if (transient && batchEnteredCount < MaxHeld) batchEntered[batchEnteredCount++] = frame;
         }
     }
 }

@@ -61,16 +61,15 @@ namespace HeadGait.Unity
         {
             if (router.WantsHead && head == null)
             {
-                var position = device.TryGetChildControl<Vector3Control>("centerEyePosition");
-                var rotation = device.TryGetChildControl<QuaternionControl>("centerEyeRotation");
+                var position = Child<Vector3Control>(device, "centerEyePosition");
+                var rotation = Child<QuaternionControl>(device, "centerEyeRotation");
                 if (position != null && rotation != null)
                 {
                     head = device;
                     headPosition = position;
                     headRotation = rotation;
-                    headAcceleration = device.TryGetChildControl<Vector3Control>("centerEyeAcceleration")
-                                       ?? device.TryGetChildControl<Vector3Control>("deviceAcceleration");
-                    headTracking = device.TryGetChildControl<IntegerControl>("trackingState");
+                    headAcceleration = Child<Vector3Control>(device, "centerEyeAcceleration") ?? Child<Vector3Control>(device, "deviceAcceleration");
+                    headTracking = Child<IntegerControl>(device, "trackingState");
                 }
             }
             if (!router.WantsPhone) return;
@@ -90,6 +89,12 @@ namespace HeadGait.Unity
                 StartSensor(g);
             }
         }
+
+        /// <summary>
+        /// The device's control at <paramref name="path"/> when it is a <typeparamref name="T"/>, else null: the Input System's
+        /// TryGetChildControl&lt;T&gt; throws on a control of another type, which would stop every later device from binding.
+        /// </summary>
+        static T Child<T>(InputDevice device, string path) where T : InputControl => device.TryGetChildControl(path) as T;
 
         void Unbind(InputDevice device)
         {

@@ -6,7 +6,8 @@ namespace HeadGait.Unity
     /// <summary>
     /// The operator's screen on the desktop window (IMGUI, so it needs no assets and is not drawn in the headset):
     /// participant id entry, participant, step, condition order, what to do now, the controls Start / Next / Repeat
-    /// trial / Abort, the SSQ as it is being answered, and any error (a full or read-only disk) in a box of its own.
+    /// trial / Abort, the SSQ as it is being answered, any error (a full or read-only disk) in a box of its own, and the data
+    /// folder. A standalone headset does not show this view: the SSQ panel in the headset repeats errors and the folder.
     /// The keyboard rates the SSQ (see <see cref="StudyKeyboard"/>).
     /// </summary>
     [DisallowMultipleComponent]
@@ -36,6 +37,7 @@ namespace HeadGait.Unity
             if (runner == null || op == null)
             {
                 GUILayout.Box("ERROR: " + (runner == null ? "no Study Runner is assigned to the operator view." : runner.SetupError));
+                if (runner != null) GUILayout.Label("Data folder: " + runner.DataFolder);
                 GUILayout.EndArea();
                 return;
             }

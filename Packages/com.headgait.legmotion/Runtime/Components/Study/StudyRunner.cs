@@ -15,7 +15,7 @@ namespace HeadGait.Unity
     [AddComponentMenu("HeadGait/Study/Study Runner")]
     public sealed class StudyRunner : MonoBehaviour
     {
-        [Tooltip("Where participants' journals are written. Empty: Documents/HeadGait Study of the user running the application.")]
+        [Tooltip("Where participants' journals are written. Empty: 'HeadGait Study' in Application.persistentDataPath (on a Quest or other Android headset /storage/emulated/0/Android/data/<package name>/files; on Windows %userprofile%/AppData/LocalLow/<company>/<product>).")]
         [SerializeField] string dataFolder = "";
 
         [Header("Study settings (a resumed participant keeps the settings it was started with)")]
@@ -35,7 +35,14 @@ namespace HeadGait.Unity
         /// <summary>A problem with the scene or settings, for the operator screen; null when all is well.</summary>
         public string SetupError { get; private set; }
 
-        public static string DefaultDataFolder => Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.MyDocuments), "HeadGait Study");
+        /// <summary>
+        /// 'HeadGait Study' in Application.persistentDataPath: the one folder a standalone headset lets the application write
+        /// and keeps across updates (a desktop's Documents does not exist there); `adb pull` copies it off an Android headset.
+        /// </summary>
+        public static string DefaultDataFolder => Path.Combine(Application.persistentDataPath, "HeadGait Study");
+
+        /// <summary>Where this runner's journals are written; shown in the operator view and the headset's panel.</summary>
+        public string DataFolder { get; private set; }
 
         void Awake()
         {
@@ -46,10 +53,10 @@ namespace HeadGait.Unity
                 RestSeconds = restSeconds,
                 HumanoidClassifier = humanoidClassifier,
             };
-            string folder = string.IsNullOrWhiteSpace(dataFolder) ? DefaultDataFolder : dataFolder;
+            DataFolder = string.IsNullOrWhiteSpace(dataFolder) ? DefaultDataFolder : dataFolder;
             try
             {
-                Operator = new StudyOperator(folder, config);
+                Operator = new StudyOperator(DataFolder, config);
             }
             catch (ArgumentException e)
             {

@@ -1,10 +1,11 @@
 namespace HeadGait
 {
     /// <summary>
-    /// The state changes <see cref="GaitAnimatorStateMachine"/> can make, in one place: the generated Animator Controller
-    /// has exactly these transitions, each taken when the <see cref="AnimatorParameters.State"/> parameter equals the target,
-    /// plus one from any state to Standing (a start contradicted before its foot landed, a finished gait, and the pipeline's
-    /// reset after a gap or re-base all stand the avatar).
+    /// The state changes <see cref="GaitAnimatorStateMachine"/> can make, in one place, plus one from any state to Standing
+    /// (a start contradicted before its foot landed, a finished gait, and the pipeline's reset after a gap or re-base all
+    /// stand the avatar). The Animator Controller connects every state to every other (Unity only sees the state of the
+    /// frame's last window, so it must be able to follow any jump), each taken when the <see cref="AnimatorParameters.State"/>
+    /// parameter equals the target.
     /// </summary>
     public static class LocomotionTransitions
     {
