@@ -51,7 +51,7 @@ namespace HeadGait
         public static KeyValueText Load(string path, string magic)
         {
             if (!File.Exists(path)) throw new FileNotFoundException($"{path}: file not found", path);
-            return Parse(File.ReadAllText(path, Encoding.UTF8), magic, path);
+            return Parse(InputLimits.ReadAllText(path, InputLimits.MaxTextModelBytes, "a text model file"), magic, path);
         }
 
         public bool Has(string key) => values.ContainsKey(key);
