@@ -20,9 +20,18 @@ namespace HeadGait.Cli
                 ClipsCommand.Build(),
                 StudyCommand.Build(),
             };
+            // The exit-code rule: 0 success, 1 a runtime or data error (a file that cannot be read, nothing to do), 2 usage (an
+            // unknown command or option, a missing or bad option value). Never a stack trace.
             try
             {
-                return root.Parse(args).Invoke(new InvocationConfiguration { EnableDefaultExceptionHandler = false });
+                var parsed = root.Parse(args);
+                if (parsed.Errors.Count > 0)
+                {
+                    foreach (var error in parsed.Errors) Console.Error.WriteLine($"error: {error.Message}");
+                    Console.Error.WriteLine("(see --help)");
+                    return 2;
+                }
+                return parsed.Invoke(new InvocationConfiguration { EnableDefaultExceptionHandler = false });
             }
             catch (UsageException e)
             {
@@ -33,6 +42,12 @@ namespace HeadGait.Cli
                                       || e is FormatException || e is InvalidOperationException || e is UnauthorizedAccessException)
             {
                 Console.Error.WriteLine($"error: {e.Message}");
+                return 1;
+            }
+            catch (Exception e)
+            {
+                // Anything else is a defect or an input no check foresaw: one line, still no stack trace.
+                Console.Error.WriteLine($"error: {e.GetType().Name}: {e.Message}");
                 return 1;
             }
         }

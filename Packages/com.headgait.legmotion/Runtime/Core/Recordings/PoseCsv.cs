@@ -66,7 +66,7 @@ namespace HeadGait
         /// <summary>True when the file starts with the pose magic line (after any byte-order mark).</summary>
         public static bool IsPoseFile(string path)
         {
-            using (var reader = InputLimits.OpenText(path, InputLimits.MaxRecordingBytes, "a pose recording"))
+            using (var reader = InputLimits.OpenText(path, InputLimits.MaxRecordingBytes, "a recording"))
             {
                 string first = reader.ReadLine();
                 return first != null && first.TrimStart('\uFEFF').Trim() == Magic;
