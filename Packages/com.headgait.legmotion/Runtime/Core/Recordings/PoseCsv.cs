@@ -127,6 +127,8 @@ namespace HeadGait
                 lagSum += estimator.Lag;
                 samples.Add(left.HasValue ? new RecordedSample(imu, left.Value, right.Value, line) : new RecordedSample(imu, line));
             });
+            string slow = estimator.TakeWarning();
+            if (slow != null) warnings.Add(slow);
             var rec = new Recording(Path.GetFileNameWithoutExtension(path), samples, warnings);
             rec.SourceLag = samples.Count > 0 ? lagSum / samples.Count : 0;
             rec.Metadata["source"] = "head pose through PoseAccelerationEstimator";
