@@ -25,7 +25,10 @@ namespace HeadGait.Tests
         [TearDown]
         public void TearDown() => Directory.Delete(folder, true);
 
-        string Sparse(string name, long length, string head = "")
+        string Sparse(string name, long length, string head = "") => Sparse(folder, name, length, head);
+
+        /// <summary>A file of <paramref name="length"/> bytes that starts with <paramref name="head"/>, the rest a hole (no disk used).</summary>
+        public static string Sparse(string folder, string name, long length, string head)
         {
             string path = Path.Combine(folder, name);
             using (var fs = new FileStream(path, FileMode.CreateNew))
