@@ -148,6 +148,12 @@ namespace HeadGait.Tests.Cli
             yield return Case(2, "study", "summarize");
             yield return Case(2, "clips", "--template", "MISSING");
             yield return Case(2, "generate", "--out");
+            // Empty values anywhere are usage errors (before: an empty --out wrote into the working folder).
+            yield return Case(2, "generate", "--out", "");
+            yield return Case(2, "generate", "--out", " ");
+            yield return Case(2, "from-bvh", "DATA", "--out", "");
+            yield return Case(2, "study", "generate", "");
+            yield return Case(2, "replay", "");
         }
 
         [TestCaseSource(nameof(Cases))]
