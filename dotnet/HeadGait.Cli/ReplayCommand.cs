@@ -39,7 +39,6 @@ namespace HeadGait.Cli
             Console.WriteLine(samples
                 ? $"HeadGait replay of the package's {paths.Count} generated sample recordings (synthetic walkers, not people), models from {folder}"
                 : $"HeadGait replay of {paths.Count} recording(s), models from {folder}");
-            Console.WriteLine();
 
             // One recording at a time: it is read, replayed by every classifier and let go, so memory holds one recording's
             // samples however many files are given (only the scores are kept).
@@ -81,6 +80,7 @@ namespace HeadGait.Cli
                     }
                 }
             }
+            Console.WriteLine();
             foreach (var path in empty) Console.Error.WriteLine($"error: {path}: no usable samples to replay");
             if (results[names[0]].Count == 0) return 1;
             // Every classifier sees the same samples, so the clock policy's account is the same for all: print it once.

@@ -248,6 +248,38 @@ namespace HeadGait.Tests
             Assert.That(walking, Is.LessThan(1.5), "walking is recognised again");
         }
 
+        /// <summary>
+        /// Every classifier through the extreme rates and an epoch clock, each followed by clean walking at 100 Hz: no
+        /// exception, windows again within a second, walking recognised within the hostile-stream bounds (FuzzTests).
+        /// </summary>
+        [TestCase("thr", 1.2)]
+        [TestCase("svm", 1.6)]
+        [TestCase("blstm", 1.6)]
+        public void EveryClassifierComesBackFromExtremeRatesAndEpochClocks(string name, double within)
+        {
+            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var walk = Walk(8);
+            foreach (double rate in new[] { 1.0, 9.5, 10.0, 2000.0, -1 })
+            {
+                var samples = new List<ImuSample>();
+                if (rate < 0) foreach (var s in walk) samples.Add(Shifted(s, 1.7e15)); // epoch microseconds read as seconds
+                else
+                    for (int i = 0; i < (int)(8 * rate); i++)
+                    {
+                        var s = walk[Math.Min(walk.Count - 1, (int)Math.Round(i / rate * 100))];
+                        samples.Add(new ImuSample(i / rate, s.X, s.Y, s.Z));
+                    }
+                int clean = samples.Count;
+                double resume = rate < 0 ? 50 : samples[clean - 1].Time + 0.01;
+                foreach (var s in Walk(8, 6)) samples.Add(Shifted(s, resume));
+                var pipeline = new GaitPipeline(models.Create(name, out _));
+                var (window, walking) = Replay(pipeline, samples, clean, new List<string>());
+                string what = rate < 0 ? "epoch 1.7e15" : $"{rate} Hz";
+                Assert.That(window, Is.LessThan(1.0), $"{name} after {what}: windows again");
+                Assert.That(walking, Is.LessThan(within), $"{name} after {what}: walking recognised");
+            }
+        }
+
         [Test]
         public void TheLowestRateIsStatedOnceAndMillisecondClocksAreNamed()
         {
