@@ -86,19 +86,6 @@ namespace HeadGait.Tests
             RefusedAndFallsBack("reference");
         }
 
-        [Test]
-        public void TheBuilderTheComponentsUseRefusesAndFallsBackToo()
-        {
-            var m = Svm();
-            m.Values["gamma"] = "1e300";
-            var c = HeadGait.Unity.GaitClassifierBuilder.Build(HeadGait.Unity.GaitClassifierKind.Svm, null,
-                new HeadGait.Unity.ModelAsset("cor_template", File.ReadAllText(Path.Combine(folder, GaitModels.CorrelationFile)), null),
-                new HeadGait.Unity.ModelAsset("svm", null, m.ToBytes()), null, out string error, out string warning);
-            Assert.That(c, Is.InstanceOf<CorrelationClassifier>());
-            Assert.That(error, Does.Contain("gamma"));
-            Assert.That(warning, Does.Contain("using COR instead"));
-        }
-
         [TestCase(GaitModels.ThresholdFile)]
         [TestCase(GaitModels.CorrelationFile)]
         public void EveryTruncationOfATextModelIsRefused(string file)
