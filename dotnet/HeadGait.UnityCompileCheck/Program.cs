@@ -167,7 +167,7 @@ namespace HeadGait.UnityCompileCheck
 
                 // Unity's and the packages' assemblies present in this configuration.
                 var sources = StandIn.Partition(stubsDir);
-                foreach (var standIn in StandIn.All.Reverse())
+                foreach (var standIn in StandIn.InDependencyOrder())
                 {
                     if (standIn.EditorOnly && !editor) continue;
                     if (standIn.Package != null && !packages.ContainsKey(standIn.Package)) continue;

@@ -51,7 +51,19 @@ namespace HeadGait.UnityCompileCheck
             ["com.unity.xr.interaction.toolkit"] = new[] { "com.unity.ugui", "com.unity.inputsystem" },
         };
 
-        public static StandIn Named(string name) => All.FirstOrDefault(s => s.Name == name);
+        /// <summary>Every stand-in after the ones it references.</summary>
+        public static List<StandIn> InDependencyOrder()
+        {
+            var order = new List<StandIn>();
+            void Visit(StandIn s)
+            {
+                if (order.Contains(s)) return;
+                foreach (var r in s.References) Visit(All.First(x => x.Name == r));
+                order.Add(s);
+            }
+            foreach (var s in All) Visit(s);
+            return order;
+        }
 
         /// <summary>The stand-in sources of each assembly.</summary>
         public static Dictionary<StandIn, List<string>> Partition(string stubsDir)
