@@ -102,7 +102,7 @@ namespace HeadGait.UnityCompileCheck
 
     /// <summary>A versionDefines entry: <see cref="Define"/> is set when the resource <see cref="Name"/> (a package, a
     /// built-in module or "Unity" for the editor) is present at a version the expression admits.</summary>
-    sealed class VersionDefine
+    public sealed class VersionDefine
     {
         public readonly string Name, Expression, Define;
         public VersionDefine(string name, string expression, string define) { Name = name; Expression = expression; Define = define; }
