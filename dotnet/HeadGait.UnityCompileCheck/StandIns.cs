@@ -7,7 +7,7 @@ namespace HeadGait.UnityCompileCheck
 {
     /// <summary>A Unity or package assembly, compiled from the stand-in sources in dotnet/UnityStubs under the name Unity
     /// gives it, so an asmdef sees it only when it (or Unity, implicitly) references that name.</summary>
-    sealed class StandIn
+    public sealed class StandIn
     {
         public readonly string Name;
         /// <summary>The package that brings it (null: the editor itself).</summary>
@@ -33,14 +33,16 @@ namespace HeadGait.UnityCompileCheck
         /// UnityEngine takes every stand-in file no other claims.</summary>
         public static readonly StandIn[] All =
         {
-            new StandIn("UnityEditor", null, true, new[] { "UnityEngine" }, "UnityEditor."),
             new StandIn("Unity.InputSystem", "com.unity.inputsystem", false, new[] { "UnityEngine" }, "UnityEngine.InputSystem."),
             new StandIn("UnityEngine.UI", "com.unity.ugui", false, new[] { "UnityEngine" }, "UnityEngine.UI."),
             new StandIn("Unity.XR.Interaction.Toolkit", "com.unity.xr.interaction.toolkit", false,
                 new[] { "UnityEngine", "UnityEngine.UI", "Unity.InputSystem" }, "UnityEngine.XR.Interaction.Toolkit."),
             new StandIn("Unity.InferenceEngine", "com.unity.ai.inference", false, new[] { "UnityEngine" }, "Unity.InferenceEngine."),
-            new StandIn("UnityEngine.TestRunner", "com.unity.test-framework", false, new[] { "UnityEngine" }, "UnityEngine.TestRunner."),
-            new StandIn("UnityEditor.TestRunner", "com.unity.test-framework", true, new[] { "UnityEngine", "UnityEditor", "UnityEngine.TestRunner" }, "UnityEditor.TestRunner."),
+            // The test framework's namespaces (UnityEngine.TestTools: UnityTest, LogAssert; UnityEditor.TestTools) live in its
+            // assemblies, so stand-ins for them are named after either.
+            new StandIn("UnityEngine.TestRunner", "com.unity.test-framework", false, new[] { "UnityEngine" }, "UnityEngine.TestRunner.", "UnityEngine.TestTools."),
+            new StandIn("UnityEditor.TestRunner", "com.unity.test-framework", true, new[] { "UnityEngine", "UnityEditor", "UnityEngine.TestRunner" }, "UnityEditor.TestRunner.", "UnityEditor.TestTools."),
+            new StandIn("UnityEditor", null, true, new[] { "UnityEngine" }, "UnityEditor."),
             new StandIn("UnityEngine", null, false, Array.Empty<string>()),
         };
 

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using HeadGait.UnityCompileCheck;
 using NUnit.Framework;
 
@@ -25,6 +26,32 @@ namespace HeadGait.Tests
         [TestCase("", "0.1.0", true)]
         public void VersionDefinesReadUnitysExpressions(string expression, string version, bool admitted)
             => Assert.That(new VersionDefine("com.example", expression, "X").Admits(version), Is.EqualTo(admitted));
+
+        [TestCase("UnityEngine.Core.cs", "UnityEngine")]
+        [TestCase("UnityEngine.Events.cs", "UnityEngine")]
+        [TestCase("Unity.Jobs.cs", "UnityEngine")]
+        [TestCase("UnityEngine.XR.cs", "UnityEngine")]
+        [TestCase("UnityEngine.UI.cs", "UnityEngine.UI")]
+        [TestCase("UnityEngine.InputSystem.cs", "Unity.InputSystem")]
+        [TestCase("UnityEngine.XR.Interaction.Toolkit.cs", "Unity.XR.Interaction.Toolkit")]
+        [TestCase("Unity.InferenceEngine.cs", "Unity.InferenceEngine")]
+        [TestCase("UnityEditor.cs", "UnityEditor")]
+        [TestCase("UnityEngine.TestTools.cs", "UnityEngine.TestRunner")]
+        [TestCase("UnityEditor.TestTools.cs", "UnityEditor.TestRunner")]
+        public void EachStandInFileCompilesIntoTheAssemblyUnityShipsItsTypesIn(string file, string assembly)
+        {
+            string folder = Path.Combine(Path.GetTempPath(), "headgait-stubs-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                Write(Path.Combine(folder, file), "");
+                var owner = StandIn.Partition(folder).Single(p => p.Value.Count == 1).Key;
+                Assert.That(owner.Name, Is.EqualTo(assembly));
+            }
+            finally
+            {
+                Directory.Delete(folder, true);
+            }
+        }
 
         [Test]
         public void FailsWhereUnityWouldAndPassesOnceTheAsmdefsAreRight()
