@@ -54,6 +54,7 @@ namespace HeadGait.UnityCompileCheck
         readonly TextWriter log;
         readonly string project, packageDir, stubsDir, nugetRoot;
         readonly string editorVersion;
+        readonly string packageMinimumUnity; // package.json "unity" (+ "unityRelease")
         readonly Dictionary<string, string> manifest;      // package -> version, as the project's manifest lists them
         readonly Dictionary<string, string> packageDeps;   // this package's own dependencies
         readonly HashSet<string> testables;
@@ -90,6 +91,8 @@ namespace HeadGait.UnityCompileCheck
             var packageJson = JsonDocument.Parse(File.ReadAllText(Path.Combine(packageDir, "package.json"))).RootElement;
             packageDeps = Versions(packageJson, "dependencies");
             manifest[PackageName] = packageJson.GetProperty("version").GetString();
+            packageMinimumUnity = packageJson.TryGetProperty("unity", out var u)
+                ? u.GetString() + "." + (packageJson.TryGetProperty("unityRelease", out var ur) ? ur.GetString() : "0f1") : null;
 
             foreach (var path in Directory.GetFiles(packageDir, "*.asmdef", SearchOption.AllDirectories).OrderBy(p => p, StringComparer.Ordinal))
             {
@@ -150,13 +153,22 @@ namespace HeadGait.UnityCompileCheck
             }
             foreach (var (name, absent) in configurations)
                 foreach (var editor in new[] { true, false })
-                    Build($"{name}, {(editor ? "editor" : "Android player")}", absent, editor);
+                    Build($"{name}, {(editor ? "editor" : "Android player")}", absent, editor, editorVersion);
+            // The oldest editor package.json admits, with the optional packages that editor can install: its own defines
+            // (UNITY_20XX_Y_OR_NEWER) and versionDefines on "Unity" select the code that editor compiles.
+            if (packageMinimumUnity != null && Semver.Parse(packageMinimumUnity).CompareTo(Semver.Parse(editorVersion)) < 0)
+            {
+                var tooNew = StandIn.PackageMinimumUnity.Where(m => Semver.Parse(m.Value).CompareTo(Semver.Parse(packageMinimumUnity)) > 0)
+                    .Select(m => m.Key).ToHashSet();
+                string without = tooNew.Count > 0 ? $", without {string.Join(" and ", tooNew.OrderBy(x => x, StringComparer.Ordinal))} (needs a newer editor)" : "";
+                Build($"package.json minimum, Unity {packageMinimumUnity}{without}, editor", tooNew, true, packageMinimumUnity);
+            }
             log.WriteLine(failures == 0 ? "unity-compile-check: every assembly compiled in every configuration"
                                             : $"unity-compile-check: {failures} failure(s)");
             return failures == 0;
         }
 
-        void Build(string configuration, HashSet<string> absent, bool editor)
+        void Build(string configuration, HashSet<string> absent, bool editor, string unity)
         {
             log.WriteLine($"== {configuration}");
             var packages = new Dictionary<string, string>(manifest);
@@ -166,7 +178,7 @@ namespace HeadGait.UnityCompileCheck
             foreach (var p in absent) packages.Remove(p);
             string platform = editor ? "Editor" : "Android";
 
-            var defines = GlobalDefines(editor);
+            var defines = GlobalDefines(editor, unity);
             bool testsIncluded = editor && packages.ContainsKey(TestFramework);
             var built = new Dictionary<string, (MetadataReference image, bool autoReferenced)>();
 
@@ -199,7 +211,7 @@ namespace HeadGait.UnityCompileCheck
                 if (testsIncluded && (IsSample(a) || testables.Contains(PackageName))) symbols.Add("UNITY_INCLUDE_TESTS");
                 foreach (var vd in a.VersionDefines)
                 {
-                    var version = vd.Name == "Unity" ? editorVersion : packages.TryGetValue(vd.Name, out var v) ? v : null;
+                    var version = vd.Name == "Unity" ? unity : packages.TryGetValue(vd.Name, out var v) ? v : null;
                     if (version != null && vd.Define != null && vd.Admits(version)) symbols.Add(vd.Define);
                 }
                 var unmet = a.DefineConstraints.Where(c => !ConstraintMet(c, symbols)).ToList();
@@ -263,11 +275,11 @@ namespace HeadGait.UnityCompileCheck
 
         /// <summary>The symbols Unity defines for every script: the editor-version series (UNITY_6000_0_OR_NEWER and each
         /// earlier series), the input handling, the API compatibility level and the editor or target platform.</summary>
-        HashSet<string> GlobalDefines(bool editor)
+        HashSet<string> GlobalDefines(bool editor, string unity)
         {
             var s = new HashSet<string> { "NET_STANDARD_2_1", "NET_STANDARD", "NETSTANDARD2_1", "NETSTANDARD", "CSHARP_7_3_OR_NEWER", "UNITY_5_3_OR_NEWER" };
-            var v = Semver.Parse(editorVersion);
-            var parts = editorVersion.Split('.');
+            var v = Semver.Parse(unity);
+            var parts = unity.Split('.');
             int major = int.Parse(parts[0]), minor = int.Parse(parts[1]);
             s.Add($"UNITY_{major}"); s.Add($"UNITY_{major}_{minor}");
             var series = new List<(int, int)>();

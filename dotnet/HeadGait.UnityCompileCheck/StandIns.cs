@@ -53,6 +53,13 @@ namespace HeadGait.UnityCompileCheck
             ["com.unity.xr.interaction.toolkit"] = new[] { "com.unity.ugui", "com.unity.inputsystem" },
         };
 
+        /// <summary>The oldest editor a package installs in (its package.json "unity"), where later than the package's
+        /// own minimum matters: com.unity.ai.inference 2.x says "unity": "6000.0".</summary>
+        public static readonly Dictionary<string, string> PackageMinimumUnity = new Dictionary<string, string>
+        {
+            ["com.unity.ai.inference"] = "6000.0",
+        };
+
         /// <summary>Every stand-in after the ones it references.</summary>
         public static List<StandIn> InDependencyOrder()
         {
