@@ -63,7 +63,7 @@ namespace HeadGait.Tests
                 Write(Path.Combine(project, "ProjectSettings", "ProjectVersion.txt"), "m_EditorVersion: 6000.0.40f1\n");
                 Write(Path.Combine(project, "Packages", "manifest.json"),
                     "{ \"dependencies\": { \"com.unity.test-framework\": \"1.4.6\", \"com.unity.ugui\": \"2.0.0\", \"com.unity.xr.interaction.toolkit\": \"3.0.8\", \"com.unity.ai.inference\": \"2.2.1\" }, \"testables\": [ \"com.headgait.legmotion\" ] }");
-                Write(Path.Combine(package, "package.json"), "{ \"name\": \"com.headgait.legmotion\", \"version\": \"0.0.1\", \"dependencies\": { \"com.unity.inputsystem\": \"1.7.0\" } }");
+                Write(Path.Combine(package, "package.json"), "{ \"name\": \"com.headgait.legmotion\", \"version\": \"0.0.1\", \"unity\": \"2021.3\", \"dependencies\": { \"com.unity.inputsystem\": \"1.7.0\" } }");
                 foreach (var stub in Directory.GetFiles(Path.Combine(Repository, "dotnet", "UnityStubs"), "*.cs"))
                     Write(Path.Combine(project, "dotnet", "UnityStubs", Path.GetFileName(stub)), File.ReadAllText(stub));
                 // A test assembly as Unity's Test Runner makes them, using a library it does not reference.
@@ -78,6 +78,8 @@ namespace HeadGait.Tests
                 // An engine-free core that reaches for UnityEngine anyway.
                 Write(Path.Combine(package, "Core", "C.asmdef"), "{ \"name\": \"C\", \"noEngineReferences\": true }");
                 Write(Path.Combine(package, "Core", "C.cs"), "public class C { UnityEngine.Vector3 v; }");
+                // Code only an editor older than Unity 6 compiles, and it does not: seen only in the package.json-minimum run.
+                Write(Path.Combine(package, "Core", "Old.cs"), "#if !UNITY_6000_0_OR_NEWER\npublic class Old { int x = \"not an int\"; }\n#endif\n");
 
                 var log = new StringWriter();
                 Assert.That(new Check(project, log).Run(), Is.False);
@@ -86,12 +88,16 @@ namespace HeadGait.Tests
                 Assert.That(text, Does.Contain("Panel.cs(1,75): error CS0234").Or.Contain("'UI' does not exist in the namespace 'UnityEngine'"));
                 Assert.That(text, Does.Contain("== every optional package, editor\n").And.Contain("== without com.unity.ugui and com.unity.xr.interaction.toolkit, editor"));
                 Assert.That(text, Does.Contain("'UnityEngine' could not be found").Or.Contain("The type or namespace name 'UnityEngine'"));
+                Assert.That(text, Does.Contain("== package.json minimum, Unity 2021.3.0f1, without com.unity.ai.inference (needs a newer editor), editor"));
+                Assert.That(text.Split("== package.json minimum")[1], Does.Contain("Old.cs(2,28): error CS0029"));
+                Assert.That(text.Split("== package.json minimum")[0], Does.Not.Contain("Old.cs"));
 
                 // Fixed as in the package: no MathNet, the sample constrained to projects with uGUI, the core engine-free.
                 Write(Path.Combine(package, "Tests", "T.cs"), "using NUnit.Framework;\npublic class T { [Test] public void A() { Assert.That(System.Math.Abs(-1), Is.EqualTo(1)); } }");
                 Write(sample, "{ \"name\": \"Panel\", \"references\": [ \"UnityEngine.UI\" ], \"defineConstraints\": [ \"HAS_UGUI\" ], " +
                               "\"versionDefines\": [ { \"name\": \"com.unity.ugui\", \"expression\": \"1.0.0\", \"define\": \"HAS_UGUI\" } ] }");
                 Write(Path.Combine(package, "Core", "C.cs"), "public class C { System.Numerics.Vector3 v; }");
+                File.Delete(Path.Combine(package, "Core", "Old.cs"));
                 log = new StringWriter();
                 Assert.That(new Check(project, log).Run(), Is.True, log.ToString());
                 Assert.That(log.ToString(), Does.Contain("  Panel: not built (defineConstraints HAS_UGUI unmet)"));
