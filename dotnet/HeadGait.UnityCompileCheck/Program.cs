@@ -182,6 +182,7 @@ namespace HeadGait.UnityCompileCheck
             bool testsIncluded = editor && packages.ContainsKey(TestFramework);
             var built = new Dictionary<string, (MetadataReference image, bool autoReferenced)>();
 
+            var nunit = MetadataReference.CreateFromFile(Path.Combine(nugetRoot, "nunit", "3.6.0", "lib", "net40", "nunit.framework.dll"));
             // Unity's and the packages' assemblies present in this configuration.
             var sources = StandIn.Partition(stubsDir);
             foreach (var standIn in StandIn.InDependencyOrder())
@@ -190,6 +191,8 @@ namespace HeadGait.UnityCompileCheck
                 if (standIn.Package != null && !packages.ContainsKey(standIn.Package)) continue;
                 if (standIn.Package == TestFramework && !testsIncluded) continue;
                 var refs = standIn.References.Where(built.ContainsKey).Select(r => built[r].image).ToList();
+                // The test framework's assemblies are built on NUnit's extension interfaces (UnityTestAttribute).
+                if (standIn.Package == TestFramework) refs.Add(nunit);
                 var image = Compile(standIn.Name, sources[standIn], defines, refs, LanguageVersion.Latest, allowUnsafe: true, out var errors);
                 if (image == null)
                 {
@@ -202,7 +205,6 @@ namespace HeadGait.UnityCompileCheck
             }
             log.WriteLine($"  stand-ins: {string.Join(", ", StandIn.All.Select(s => s.Name).Where(built.ContainsKey))}");
 
-            var nunit = MetadataReference.CreateFromFile(Path.Combine(nugetRoot, "nunit", "3.6.0", "lib", "net40", "nunit.framework.dll"));
             foreach (var a in Order(asmdefs))
             {
                 if (!a.BuildsFor(platform)) { log.WriteLine($"  {a.Name}: not built (platforms)"); continue; }

@@ -1,0 +1,3 @@
+// The test framework's [UnityTest] stand-in (UnityEngine.TestRunner.cs) ends the stand-ins' frame through FrameLoop, an
+// internal of these UnityEngine stand-ins; the compile check builds it as its own assembly, as Unity ships it.
+[assembly: System.Runtime.CompilerServices.InternalsVisibleTo("UnityEngine.TestRunner")]
