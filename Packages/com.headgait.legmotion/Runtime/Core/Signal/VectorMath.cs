@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace HeadGait
 {
@@ -63,6 +64,7 @@ namespace HeadGait
         const float B6 = 1.19825839466702e-06f;
 
         /// <summary>tanh of every lane, from a rational approximation (no exp): about 1e-7 from Math.Tanh.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector<float> Tanh(Vector<float> x)
         {
             x = Vector.Min(Vector.Max(x, new Vector<float>(-TanhLimit)), new Vector<float>(TanhLimit));
@@ -80,6 +82,7 @@ namespace HeadGait
         }
 
         /// <summary>The logistic function of every lane, as 0.5 + 0.5 tanh(x / 2).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Vector<float> Sigmoid(Vector<float> x)
         {
             var half = new Vector<float>(0.5f);

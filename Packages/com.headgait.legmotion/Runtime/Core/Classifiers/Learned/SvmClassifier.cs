@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace HeadGait
 {
@@ -135,11 +136,15 @@ namespace HeadGait
                 if (n == WindowsPerPass) KernelsOfFour(); // the products, not the loads, are most of the cost: fewer go one by one
                 else
                     for (int w = 0; w < n; w++) KernelsOfOne(w);
+                // The polynomial apart from the products: a call there would make the JIT keep the sums on the stack.
+                int used = n * firstBlock[classes];
+                for (int i = 0; i < used; i++) kernel[i] = Kernel(kernel[i]);
                 Vote(n, votes, w0 * classes, features, w0 * width);
             }
         }
 
         /// <summary>(gamma a.b + coef0)^degree, lane by lane.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         Vector<float> Kernel(Vector<float> dot)
         {
             var b = new Vector<float>((float)gamma) * dot + new Vector<float>((float)coef0);
@@ -149,7 +154,7 @@ namespace HeadGait
             return p;
         }
 
-        /// <summary>Window w's kernel values, eight blocks at a time (eight independent sums keep the adder busy).</summary>
+        /// <summary>Window w's dot products with the support vectors, eight blocks at a time (eight independent sums keep the adder busy).</summary>
         void KernelsOfOne(int w)
         {
             int blockCount = firstBlock[classes], ko = w * blockCount;
@@ -172,25 +177,25 @@ namespace HeadGait
                     s7 += run[7 * width + d] * xd;
                 }
                 int o = ko + bk;
-                kernel[o] = Kernel(s0);
-                kernel[o + 1] = Kernel(s1);
-                kernel[o + 2] = Kernel(s2);
-                kernel[o + 3] = Kernel(s3);
-                kernel[o + 4] = Kernel(s4);
-                kernel[o + 5] = Kernel(s5);
-                kernel[o + 6] = Kernel(s6);
-                kernel[o + 7] = Kernel(s7);
+                kernel[o] = s0;
+                kernel[o + 1] = s1;
+                kernel[o + 2] = s2;
+                kernel[o + 3] = s3;
+                kernel[o + 4] = s4;
+                kernel[o + 5] = s5;
+                kernel[o + 6] = s6;
+                kernel[o + 7] = s7;
             }
             for (; bk < blockCount; bk++)
             {
                 var s = Vector<float>.Zero;
                 var block = new ReadOnlySpan<Vector<float>>(blocks, bk * width, width);
                 for (int d = 0; d < xw.Length; d++) s += block[d] * new Vector<float>(xw[d]);
-                kernel[ko + bk] = Kernel(s);
+                kernel[ko + bk] = s;
             }
         }
 
-        /// <summary>Four windows' kernel values, two blocks at a time: each block is loaded once for the four windows.</summary>
+        /// <summary>Four windows' dot products with the support vectors, two blocks at a time: each block is loaded once for the four windows.</summary>
         void KernelsOfFour()
         {
             int blockCount = firstBlock[classes], stride = blockCount;
@@ -215,14 +220,14 @@ namespace HeadGait
                     t0 += v * a0; t1 += v * a1; t2 += v * a2; t3 += v * a3;
                 }
                 int o = bk;
-                kernel[o] = Kernel(s0);
-                kernel[stride + o] = Kernel(s1);
-                kernel[2 * stride + o] = Kernel(s2);
-                kernel[3 * stride + o] = Kernel(s3);
-                kernel[o + 1] = Kernel(t0);
-                kernel[stride + o + 1] = Kernel(t1);
-                kernel[2 * stride + o + 1] = Kernel(t2);
-                kernel[3 * stride + o + 1] = Kernel(t3);
+                kernel[o] = s0;
+                kernel[stride + o] = s1;
+                kernel[2 * stride + o] = s2;
+                kernel[3 * stride + o] = s3;
+                kernel[o + 1] = t0;
+                kernel[stride + o + 1] = t1;
+                kernel[2 * stride + o + 1] = t2;
+                kernel[3 * stride + o + 1] = t3;
             }
             for (; bk < blockCount; bk++)
             {
@@ -237,10 +242,10 @@ namespace HeadGait
                     s3 += v * new Vector<float>(x3[d]);
                 }
                 int o = bk;
-                kernel[o] = Kernel(s0);
-                kernel[stride + o] = Kernel(s1);
-                kernel[2 * stride + o] = Kernel(s2);
-                kernel[3 * stride + o] = Kernel(s3);
+                kernel[o] = s0;
+                kernel[stride + o] = s1;
+                kernel[2 * stride + o] = s2;
+                kernel[3 * stride + o] = s3;
             }
         }
 
