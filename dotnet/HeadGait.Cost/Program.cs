@@ -32,9 +32,11 @@ namespace HeadGait.Cost
                     case "--models": models = Next(); break;
                     case "--rounds": rounds = int.Parse(Next(), CultureInfo.InvariantCulture); break;
                     case "--samples": maxSamples = int.Parse(Next(), CultureInfo.InvariantCulture); break;
+                    case "--no-vectors": VectorMath.UseVectors = false; break;
                     case "-h":
                     case "--help":
-                        Console.WriteLine("headgait-cost [--data DIR] [--models DIR] [--samples N (default 60000)] [--rounds R (default 5)]");
+                        Console.WriteLine("headgait-cost [--data DIR] [--models DIR] [--samples N (default 60000)] [--rounds R (default 5)] [--no-vectors]");
+                        Console.WriteLine("  --no-vectors: the learned classifiers' scalar paths, as where the runtime has no SIMD lanes (Unity's Mono).");
                         Console.WriteLine("  DIR: labelled recordings (*.csv); default: the package's embedded sample recordings.");
                         return 0;
                     default:
@@ -247,7 +249,7 @@ namespace HeadGait.Cost
             Calibrate();
             Console.WriteLine($"headgait-cost: {recordings.Count} recordings, {recordings.Sum(r => r.Samples.Count)} samples; {rounds} rounds; "
                 + $"{(ThreadClock.IsCpuTime ? "thread CPU time" : "wall time (no thread CPU clock here)")}, timer cost {overheadNs:F0} ns subtracted; "
-                + $"SIMD {(System.Numerics.Vector.IsHardwareAccelerated ? "on" : "off")}, {System.Numerics.Vector<float>.Count} float lanes; {Environment.ProcessorCount} cores");
+                + $"SIMD {(System.Numerics.Vector.IsHardwareAccelerated ? "on" : "off")}, {System.Numerics.Vector<float>.Count} float lanes, learned classifiers {(VectorMath.UseVectors ? "in lanes" : "on their scalar paths")}; {Environment.ProcessorCount} cores");
             string svmOnnx = Path.Combine(modelsFolder, "svm.onnx"), blstmOnnx = Path.Combine(modelsFolder, "blstm.onnx");
             OnnxModel ortSvm = null, ortBlstm = null;
             try

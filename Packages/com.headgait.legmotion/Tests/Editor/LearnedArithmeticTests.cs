@@ -143,6 +143,22 @@ namespace HeadGait.Tests
         public void FloatArithmeticAnswersAsDoubleOnTheGeneratedRecordings()
             => Assert.That(Compare(TestData.EvalSet(), 3), Is.GreaterThan(1000));
 
+        /// <summary>Where the runtime has no SIMD lanes (Unity's Mono) the scalar paths answer the same.</summary>
+        [Test]
+        public void WithoutLanesTheScalarPathsAnswerAsDouble()
+        {
+            bool before = VectorMath.UseVectors;
+            VectorMath.UseVectors = false;
+            try
+            {
+                Assert.That(Compare(TestData.EvalSet(), 29), Is.GreaterThan(200));
+            }
+            finally
+            {
+                VectorMath.UseVectors = before;
+            }
+        }
+
         [Test]
         public void FloatArithmeticAnswersAsDoubleOnTheRealRecordings()
         {

@@ -26,6 +26,9 @@ namespace HeadGait
         readonly float[] fcW, fcB;            // [K x 2H], [K]
         readonly Vector<float>[] gates, cell;
         readonly float[] h, x, joined;
+        // Without SIMD lanes (VectorMath.UseVectors): PyTorch's own layout, per direction, and scalar state.
+        readonly float[][] plainIh, plainHh, plainBias;
+        readonly float[] plainGates, plainCell;
 
         /// <summary>The BLSTM with the time filter (<see cref="PhaseSequenceFilter"/>).</summary>
         public BlstmClassifier(ModelFile model) : this(model, new PhaseFilterSettings()) { }
@@ -55,6 +58,17 @@ namespace HeadGait
                 wHh[d] = ByUnit(hh, d * 4 * hidden * hidden, hidden);
                 bias[d] = ByUnit(b, d * 4 * hidden, 1);
             }
+            plainIh = new float[2][];
+            plainHh = new float[2][];
+            plainBias = new float[2][];
+            for (int d = 0; d < 2; d++)
+            {
+                plainIh[d] = ToFloat(ih, d * 4 * hidden * inputs, 4 * hidden * inputs);
+                plainHh[d] = ToFloat(hh, d * 4 * hidden * hidden, 4 * hidden * hidden);
+                plainBias[d] = ToFloat(b, d * 4 * hidden, 4 * hidden);
+            }
+            plainGates = new float[4 * hidden];
+            plainCell = new float[hidden];
             fcW = ToFloat(model.Tensor("fc_w", classes, 2 * hidden));
             fcB = ToFloat(model.Tensor("fc_b", classes));
             gates = new Vector<float>[gateVectors];
@@ -88,18 +102,28 @@ namespace HeadGait
             return r;
         }
 
-        static float[] ToFloat(double[] v)
+        static float[] ToFloat(double[] v) => ToFloat(v, 0, v.Length);
+
+        static float[] ToFloat(double[] v, int offset, int length)
         {
-            var r = new float[v.Length];
-            for (int i = 0; i < v.Length; i++) r[i] = (float)v[i];
+            var r = new float[length];
+            for (int i = 0; i < length; i++) r[i] = (float)v[offset + i];
             return r;
         }
 
         protected override void Score(double[] standardised, double[] probabilities)
         {
             for (int i = 0; i < x.Length; i++) x[i] = (float)standardised[i];
-            Run(0, 0);
-            Run(1, hidden);
+            if (VectorMath.UseVectors)
+            {
+                Run(0, 0);
+                Run(1, hidden);
+            }
+            else
+            {
+                RunPlain(0, 0);
+                RunPlain(1, hidden);
+            }
             double max = double.NegativeInfinity;
             for (int k = 0; k < classes; k++)
             {
@@ -116,6 +140,38 @@ namespace HeadGait
                 sum += probabilities[k];
             }
             for (int k = 0; k < classes; k++) probabilities[k] /= sum;
+        }
+
+        /// <summary>
+        /// <see cref="Run"/> without SIMD lanes: one gate at a time, in float32 with the same activations (the sums in
+        /// another order, so within float precision of the lanes' answers).
+        /// </summary>
+        void RunPlain(int direction, int offset)
+        {
+            var wi = plainIh[direction];
+            var wh = plainHh[direction];
+            var b = plainBias[direction];
+            Array.Clear(h, 0, h.Length);
+            Array.Clear(plainCell, 0, hidden);
+            for (int n = 0; n < steps; n++)
+            {
+                int xo = (direction == 0 ? n : steps - 1 - n) * inputs;
+                for (int g = 0; g < 4 * hidden; g++)
+                {
+                    float z = b[g];
+                    for (int i = 0; i < inputs; i++) z += wi[g * inputs + i] * x[xo + i];
+                    for (int j = 0; j < hidden; j++) z += wh[g * hidden + j] * h[j];
+                    plainGates[g] = z;
+                }
+                for (int j = 0; j < hidden; j++)
+                {
+                    float c = VectorMath.Sigmoid(plainGates[hidden + j]) * plainCell[j]
+                        + VectorMath.Sigmoid(plainGates[j]) * VectorMath.Tanh(plainGates[2 * hidden + j]);
+                    plainCell[j] = c;
+                    h[j] = VectorMath.Sigmoid(plainGates[3 * hidden + j]) * VectorMath.Tanh(c);
+                }
+            }
+            Array.Copy(h, 0, joined, offset, hidden);
         }
 
         /// <summary>One direction over the window; its final hidden state goes to joined[offset..].</summary>

@@ -32,6 +32,7 @@ namespace HeadGait
         readonly float[] x;                // [WindowsPerPass x D]
         readonly Vector<float>[] kernel;   // [WindowsPerPass x blocks]
         readonly double[] decision;
+        double[] kernelInDouble;           // [nSV], the scalar path's, made on its first use
         readonly double[] share;           // [WindowsPerPass x (K-1) x K]: each coefficient row over each class's vectors
 
         /// <summary>The SVM with the time filter (<see cref="PhaseSequenceFilter"/>, <see cref="DefaultFilter"/>).</summary>
@@ -129,6 +130,11 @@ namespace HeadGait
         /// </summary>
         protected override void ScoreBatch(double[] features, int windows, double[] votes)
         {
+            if (!VectorMath.UseVectors)
+            {
+                for (int w = 0; w < windows; w++) ScoreInDouble(features, w * width, votes, w * classes);
+                return;
+            }
             for (int w0 = 0; w0 < windows; w0 += WindowsPerPass)
             {
                 int n = Math.Min(WindowsPerPass, windows - w0);
@@ -309,6 +315,32 @@ namespace HeadGait
         /// About one window in a hundred has such a pair; each costs the two classes' kernels in double.
         /// </summary>
         public const double RecheckMargin = 0.01;
+
+        /// <summary>
+        /// Without SIMD lanes (<see cref="VectorMath.UseVectors"/>): one window in double, one support vector at a time, as
+        /// LIBSVM computes it and as this class did before float32 lanes; the same votes as the lanes cast.
+        /// </summary>
+        void ScoreInDouble(double[] features, int fo, double[] votes, int vo)
+        {
+            if (kernelInDouble == null) kernelInDouble = new double[vectors];
+            for (int s = 0; s < vectors; s++) kernelInDouble[s] = KernelInDouble(s, features, fo);
+            int rows = classes - 1;
+            for (int r = 0; r < rows; r++)
+                for (int c = 0; c < classes; c++)
+                    share[r * classes + c] = VectorMath.Dot(dualCoef, r * vectors + start[c], kernelInDouble, start[c], count[c]);
+            Array.Clear(votes, vo, classes);
+            int pair = 0;
+            for (int i = 0; i < classes; i++)
+            {
+                for (int j = i + 1; j < classes; j++)
+                {
+                    double sum = intercept[pair] + share[(j - 1) * classes + i] + share[i * classes + j];
+                    decision[pair++] = sum;
+                    if (sum > 0) votes[vo + i]++;
+                    else votes[vo + j]++;
+                }
+            }
+        }
 
         /// <summary>Pair (i, j)'s decision value in double, over the two classes' support vectors, as LIBSVM computes it.</summary>
         double DecideInDouble(int pair, int i, int j, double[] features, int fo)
