@@ -64,7 +64,7 @@ namespace HeadGait
 
         // Odd numerator and even denominator of a [13/6] rational approximation of tanh on [-TanhLimit, TanhLimit], the
         // form Eigen uses for float32; beyond the limit tanh is +-1 within float precision. Largest error against
-        // Math.Tanh about 1e-7 (VectorMathTests).
+        // Math.Tanh about 3e-7 (VectorMathTests).
         const float TanhLimit = 7.90531110763549805f;
         const float A1 = 4.89352455891786e-03f, A3 = 6.37261928875436e-04f, A5 = 1.48572235717979e-05f;
         const float A7 = 5.12229709037114e-08f, A9 = -8.60467152213735e-11f, A11 = 2.00018790482477e-13f;
