@@ -300,6 +300,7 @@ namespace HeadGait.Cost
             var svmFeatures = new double[width];
             var batch = new double[4 * width];
             var batchScores = new double[4 * classes];
+            var pairScores = new double[2 * classes];
             var singleVotes = new double[4 * classes];
             var net = new double[classes];
             int inBatch = 0, rotation = 0, round = 0;
@@ -315,6 +316,10 @@ namespace HeadGait.Cost
                 }
                 Array.Copy(blstm.Standardise(w), blstmFeatures, blstmFeatures.Length);
                 Array.Copy(svm.Standardise(w), svmFeatures, width);
+                // Windows scored together (a 72 Hz frame holds one or two; four per pass) are timed in the rotation too,
+                // when this window completes a pair or a four.
+                Array.Copy(svmFeatures, 0, batch, inBatch * width, width);
+                inBatch++;
                 for (int k = 0; k < Timed.Length; k++)
                 {
                     int which = Timed[(k + rotation) % Timed.Length];
@@ -338,6 +343,21 @@ namespace HeadGait.Cost
                             svmNet.Network.Evaluate(svmFeatures, 1, net);
                             b = ThreadClock.Now();
                             t[5].Add(round, Us(a, b));
+                            break;
+                        case 6:
+                            if (inBatch % 2 != 0) break;
+                            var pair = Pair(batch, inBatch - 2, width);
+                            a = ThreadClock.Now();
+                            svmBatch.Network.Evaluate(pair, 2, pairScores);
+                            b = ThreadClock.Now();
+                            t[6].Add(round, Us(a, b) / 2);
+                            break;
+                        case 7:
+                            if (inBatch != 4) break;
+                            a = ThreadClock.Now();
+                            svmBatch.Network.Evaluate(batch, 4, batchScores);
+                            b = ThreadClock.Now();
+                            t[7].Add(round, Us(a, b) / 4);
                             break;
                         case 8:
                             if (ortBlstm == null) break;
@@ -386,24 +406,10 @@ namespace HeadGait.Cost
                     if (mine != theirs) svmDisagree++;
                     for (int k = 0; k < decision.Length; k++) svmDecisionDiff = Math.Max(svmDecisionDiff, Math.Abs(svmNet.LastDecision[k] - decision[k]));
                 }
-                // Windows scored together: a frame's two (72 Hz frames hold one or two), and four per pass.
-                Array.Copy(svmFeatures, 0, batch, inBatch * width, width);
                 svmNet.Network.Evaluate(svmFeatures, 1, net);
-                Array.Copy(net, 0, singleVotes, inBatch * classes, classes);
-                inBatch++;
-                if (inBatch % 2 == 0)
-                {
-                    long a = ThreadClock.Now();
-                    svmBatch.Network.Evaluate(Pair(batch, inBatch - 2, width), 2, batchScores);
-                    long b = ThreadClock.Now();
-                    t[6].Add(round, Us(a, b) / 2);
-                }
+                Array.Copy(net, 0, singleVotes, (inBatch - 1) * classes, classes);
                 if (inBatch == 4)
                 {
-                    long a = ThreadClock.Now();
-                    svmBatch.Network.Evaluate(batch, 4, batchScores);
-                    long b = ThreadClock.Now();
-                    t[7].Add(round, Us(a, b) / 4);
                     for (int i = 0; i < 4 * classes; i++) batchDiff = Math.Max(batchDiff, Math.Abs(batchScores[i] - singleVotes[i]));
                     inBatch = 0;
                 }
@@ -447,8 +453,8 @@ namespace HeadGait.Cost
             }
         }
 
-        /// <summary>The contenders timed window by window, by their index in the list of times (the batches are timed after).</summary>
-        static readonly int[] Timed = { 0, 1, 2, 3, 4, 5, 8, 9 };
+        /// <summary>The contenders timed window by window, by their index in the list of times.</summary>
+        static readonly int[] Timed = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
 
         static double[] pairBuffer;
 
