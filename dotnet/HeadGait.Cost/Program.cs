@@ -83,11 +83,13 @@ namespace HeadGait.Cost
             int every = (int)Math.Max(1, total / maxSamples);
             var picked = new List<Recording>();
             long taken = 0;
-            for (int i = 0; i < all.Count && taken < maxSamples; i += every)
+            for (int i = 0; i < all.Count && (taken < maxSamples || picked.Count < 2); i += every)
             {
                 picked.Add(all[i]);
                 taken += all[i].Samples.Count;
             }
+            // The first recording only warms up: at least one more is measured.
+            if (picked.Count < 2 && all.Count >= 2) picked.Add(all[all.Count - 1]);
             return picked;
         }
     }
@@ -260,7 +262,8 @@ namespace HeadGait.Cost
             }
             catch (Exception e) when (e is DllNotFoundException || e is TypeInitializationException || e is OnnxRuntimeException || e is BadImageFormatException || e is FileNotFoundException || e is EntryPointNotFoundException)
             {
-                Console.WriteLine($"ONNX Runtime could not be used ({e.GetType().Name}: {e.Message.Split('\n')[0]}): C# figures only, no ratios.");
+                var cause = e.InnerException ?? e;
+                Console.WriteLine($"ONNX Runtime could not be used ({cause.GetType().Name}: {cause.Message.Split('\n')[0]}): C# figures only, no ratios.");
                 ortBlstm?.Dispose();
                 ortBlstm = null;
                 ortSvm = null;
