@@ -8,7 +8,8 @@ namespace HeadGait
     /// SVM: support vector machine with a polynomial kernel K(a, b) = (gamma a.b + coef0)^degree (the paper: cubic,
     /// C = 100), one-versus-one over the stride segments and Standing as LIBSVM trains it. Each pair's decision value
     /// votes for one of its two classes; the class with most votes wins, ties going to the lower class. Scores are the
-    /// votes. Scores in float32 SIMD lanes, several windows per pass over the support vectors. Allocation-free per window.
+    /// votes. Computed in float32 SIMD lanes, several windows per pass over the support vectors, with pairs too close to
+    /// call decided again in double (<see cref="RecheckMargin"/>); scalar and double without lanes. Allocation-free per window.
     /// </summary>
     public sealed class SvmClassifier : LearnedClassifier
     {
@@ -20,12 +21,12 @@ namespace HeadGait
         readonly int classes, width, vectors, degree;
         readonly double gamma, coef0;
         readonly double[] intercept;       // [K(K-1)/2]
-        readonly double[] supportVectors;  // [nSV x D], the model's own double values: pairs decided too close to call
+        readonly double[] supportVectors;  // [nSV x D], the model's own double values: for pairs too close to call in float32
         readonly double[] dualCoef;        // [(K-1) x nSV]
         readonly int[] start, count;       // each class's support vectors
         // The support vectors in blocks of one lane width, each class's padded with zero vectors to whole blocks, stored
         // feature by feature ([block][feature] of lanes) so that a block's kernel values come out lane by lane with no
-        // horizontal sums; float32 (the products agree with double to about 1e-6 of the decision values).
+        // horizontal sums; float32 (decision values within about 1e-3 of double arithmetic).
         readonly Vector<float>[] blocks;
         readonly int[] firstBlock;         // [K + 1]: each class's blocks
         readonly Vector<float>[] dual;     // [coefficient row][block], zero in the padding
