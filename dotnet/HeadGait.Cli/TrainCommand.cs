@@ -204,7 +204,9 @@ namespace HeadGait.Cli
                 string path = Path.Combine(folder, file), refPath = ReferenceCheck.ReferencePath(path);
                 if (!File.Exists(path) || !File.Exists(refPath)) continue;
                 double diff = ReferenceCheck.MaxDifference(ModelFile.Load(path), ModelFile.Load(refPath));
-                Console.WriteLine($"{file}: C# forward pass vs the training framework on the reference windows: max |difference| {diff:G3}");
+                double decision = ReferenceCheck.MaxDecisionDifference(ModelFile.Load(path), ModelFile.Load(refPath));
+                Console.WriteLine($"{file}: C# forward pass vs the training framework on the reference windows: max |probability difference| {diff:G3}"
+                    + (file == GaitModels.SvmFile ? $", max |decision value difference| {decision:G3} (float32 sums)" : ""));
                 if (!(diff <= 1e-5)) throw new InvalidOperationException($"{path}: the C# forward pass differs from the training framework by {diff:G3} (limit 1e-5)");
             }
         }

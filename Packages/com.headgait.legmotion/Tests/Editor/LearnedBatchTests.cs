@@ -150,10 +150,12 @@ namespace HeadGait.Tests
             Assert.That(actual, Is.Not.EqualTo(expected));
         }
 
-        [Test]
-        public void TheNetworkScoresABatchAsItScoresEachWindow()
+        /// <summary>The SVM scores four windows per pass and the rest one by one: every batch size gives each window's own scores.</summary>
+        [TestCase("blstm")]
+        [TestCase("svm")]
+        public void TheNetworkScoresABatchAsItScoresEachWindow(string kind)
         {
-            var blstm = Create(Models, "blstm");
+            var blstm = Create(Models, kind);
             var samples = GeneratedWalkWithGap();
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = blstm.WindowLength });
             var rows = new List<double[]>();
@@ -172,6 +174,13 @@ namespace HeadGait.Tests
             blstm.Network.Evaluate(features, rows.Count, scores);
             for (int i = 0; i < rows.Count; i++)
                 Assert.That(new ArraySegment<double>(scores, i * k, k), Is.EqualTo(single[i]), $"window {i}");
+            for (int size = 1; size <= 9; size++)
+            {
+                var part = new double[size * k];
+                blstm.Network.Evaluate(new ArraySegment<double>(features, 20 * width, size * width).ToArray(), size, part);
+                for (int i = 0; i < size; i++)
+                    Assert.That(new ArraySegment<double>(part, i * k, k), Is.EqualTo(single[20 + i]), $"window {i} of a batch of {size}");
+            }
             Assert.That(single[0], Is.Not.EqualTo(single[40]), "the windows differ");
             Assert.Throws<ArgumentException>(() => blstm.Network.Evaluate(features, rows.Count + 1, scores));
         }

@@ -344,10 +344,11 @@ namespace HeadGait.Tests
         }
 
         [Test]
-        public void SteadyStateFramesAllocateNothing([Values("cor", "thr", "blstm")] string classifier)
+        public void SteadyStateFramesAllocateNothing([Values("cor", "thr", "svm", "blstm")] string classifier)
         {
             var samples = Stream(irregular: true, seconds: 9);
-            IGaitClassifier make() => classifier == "cor" ? Cor() : classifier == "thr" ? new ThresholdClassifier() : Blstm();
+            IGaitClassifier make() => classifier == "cor" ? Cor() : classifier == "thr" ? new ThresholdClassifier()
+                : classifier == "svm" ? new SvmClassifier(ModelFile.Load(Path.Combine(ModelsFolder, GaitModels.SvmFile))) : Blstm();
 
             // The batch runs on this thread here, so its allocations count too.
             var runner = new GaitBatchRunner(new GaitPipeline(make()));

@@ -380,8 +380,13 @@ namespace HeadGait
                         {
                             int km = Mod(k, p);
                             if (startNorm[t][i][km] <= 1e-12) continue;
+                            // The curve read cyclically from km - (L - 1): an index that wraps, not two modulos per product.
                             double dot = 0;
-                            for (int j = 0; j < L; j++) dot += centred[j] * curve[Mod(km - (L - 1 - j), p)];
+                            for (int j = 0, c = Mod(km - (L - 1), p); j < L; j++)
+                            {
+                                dot += centred[j] * curve[c];
+                                if (++c == p) c = 0;
+                            }
                             double r = dot / (norm * startNorm[t][i][km]);
                             if (r > tr)
                             {

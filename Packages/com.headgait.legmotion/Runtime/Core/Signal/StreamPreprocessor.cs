@@ -369,6 +369,14 @@ namespace HeadGait
             Emit(sample.Time, smv, sample.X, sample.Y, sample.Z, onWindow);
         }
 
+        /// <summary>The ring from slot <paramref name="start"/> on, oldest first: two block copies.</summary>
+        static void Unroll(double[] ring, int start, double[] window)
+        {
+            int tail = ring.Length - start;
+            Array.Copy(ring, start, window, 0, tail);
+            Array.Copy(ring, 0, window, tail, start);
+        }
+
         void Emit(double t, double smv, double forward, double lateral, double vertical, Action<SignalWindow> onWindow)
         {
             int n = smvRing.Length;
@@ -383,15 +391,10 @@ namespace HeadGait
             if (filled < settings.WindowLength) return;
             // Unroll the ring oldest-first into the window (slots not yet filled after a restart are zeros).
             int start = (int)(filled % n);
-            for (int i = 0; i < n; i++)
-            {
-                int k = start + i;
-                if (k >= n) k -= n;
-                window.Smv[i] = smvRing[k];
-                window.Lateral[i] = latRing[k];
-                window.Forward[i] = fwdRing[k];
-                window.Vertical[i] = vertRing[k];
-            }
+            Unroll(smvRing, start, window.Smv);
+            Unroll(latRing, start, window.Lateral);
+            Unroll(fwdRing, start, window.Forward);
+            Unroll(vertRing, start, window.Vertical);
             for (int i = 0; i < n - filled; i++) window.Smv[i] = window.Lateral[i] = window.Forward[i] = window.Vertical[i] = 0;
             window.EndTime = t;
             window.EndIndex = filled - 1;

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 
 namespace HeadGait
 {
@@ -6,16 +7,28 @@ namespace HeadGait
     /// BLSTM: one bidirectional LSTM layer over the window's time steps, the forward direction's last output and the
     /// backward direction's first joined, a fully connected layer and a softmax over the stride segments and Standing
     /// (dropout acts only in training). Gates in PyTorch's order (input, forget, cell, output); the two biases are stored
-    /// summed. Allocation-free per window.
+    /// summed. Runs in float32, as the file stores the weights and as the network was trained, in SIMD lanes
+    /// (<see cref="Vector{T}"/>): each step's gates are one pass over the recurrent weights laid out by hidden unit, and the
+    /// activations are <see cref="VectorMath.Tanh"/> and <see cref="VectorMath.Sigmoid"/> lane by lane. Allocation-free per window.
     /// </summary>
     public sealed class BlstmClassifier : LearnedClassifier
     {
         public const string Kind = "blstm";
 
+        /// <summary>Gate vectors summed together in registers: 8 independent sums keep the adder busy.</summary>
+        const int Block = 8;
+
         readonly int hidden, inputs, steps, classes;
-        readonly double[][] wIh, wHh, bias;   // per direction: [4H x C], [4H x H], [4H]
-        readonly double[] fcW, fcB;           // [K x 2H], [K]
-        readonly double[] h, c, gates, joined;
+        readonly int unitVectors;             // hidden units padded to whole lanes, in vectors
+        readonly int gateVectors;             // 4 x unitVectors: the gates, each gate's units padded to whole lanes
+        readonly Vector<float>[][] wIh, wHh;  // per direction: [input][gate vector], [hidden unit][gate vector]
+        readonly Vector<float>[][] bias;      // per direction: [gate vector]
+        readonly float[] fcW, fcB;            // [K x 2H], [K]
+        readonly Vector<float>[] gates, cell;
+        readonly float[] h, x, joined;
+        // Without SIMD lanes (VectorMath.UseVectors): PyTorch's own layout, per direction, and scalar state.
+        readonly float[][] plainIh, plainHh, plainBias;
+        readonly float[] plainGates, plainCell;
 
         /// <summary>The BLSTM with the time filter (<see cref="PhaseSequenceFilter"/>).</summary>
         public BlstmClassifier(ModelFile model) : this(model, new PhaseFilterSettings()) { }
@@ -30,24 +43,39 @@ namespace HeadGait
             inputs = Features.Channels.Length;
             steps = Features.TimeSteps;
             classes = Segments.ClassCount;
+            int lanes = Vector<float>.Count;
+            unitVectors = (hidden + lanes - 1) / lanes;
+            gateVectors = 4 * unitVectors;
             var ih = model.Tensor("lstm_w_ih", 2, 4 * hidden, inputs);
             var hh = model.Tensor("lstm_w_hh", 2, 4 * hidden, hidden);
             var b = model.Tensor("lstm_b", 2, 4 * hidden);
-            wIh = new double[2][];
-            wHh = new double[2][];
-            bias = new double[2][];
+            wIh = new Vector<float>[2][];
+            wHh = new Vector<float>[2][];
+            bias = new Vector<float>[2][];
             for (int d = 0; d < 2; d++)
             {
-                wIh[d] = Slice(ih, d, 4 * hidden * inputs);
-                wHh[d] = Slice(hh, d, 4 * hidden * hidden);
-                bias[d] = Slice(b, d, 4 * hidden);
+                wIh[d] = ByUnit(ih, d * 4 * hidden * inputs, inputs);
+                wHh[d] = ByUnit(hh, d * 4 * hidden * hidden, hidden);
+                bias[d] = ByUnit(b, d * 4 * hidden, 1);
             }
-            fcW = model.Tensor("fc_w", classes, 2 * hidden);
-            fcB = model.Tensor("fc_b", classes);
-            h = new double[hidden];
-            c = new double[hidden];
-            gates = new double[4 * hidden];
-            joined = new double[2 * hidden];
+            plainIh = new float[2][];
+            plainHh = new float[2][];
+            plainBias = new float[2][];
+            for (int d = 0; d < 2; d++)
+            {
+                plainIh[d] = ToFloat(ih, d * 4 * hidden * inputs, 4 * hidden * inputs);
+                plainHh[d] = ToFloat(hh, d * 4 * hidden * hidden, 4 * hidden * hidden);
+                plainBias[d] = ToFloat(b, d * 4 * hidden, 4 * hidden);
+            }
+            plainGates = new float[4 * hidden];
+            plainCell = new float[hidden];
+            fcW = ToFloat(model.Tensor("fc_w", classes, 2 * hidden));
+            fcB = ToFloat(model.Tensor("fc_b", classes));
+            gates = new Vector<float>[gateVectors];
+            cell = new Vector<float>[unitVectors];
+            h = new float[unitVectors * lanes];
+            x = new float[Features.Width];
+            joined = new float[2 * hidden];
         }
 
         public BlstmClassifier(string path) : this(ModelFile.Load(path)) { }
@@ -55,21 +83,51 @@ namespace HeadGait
         public override string Name => Filter == null ? "BLSTM-raw" : "BLSTM";
         public int Hidden => hidden;
 
-        static double[] Slice(double[] all, int index, int length)
+        /// <summary>
+        /// A [4H x n] gate matrix (PyTorch's rows) as n rows of gate vectors: element (gate s, unit j) of column i goes to
+        /// row i, lane s * padded H + j; the padding lanes stay zero, so padded units keep a zero state.
+        /// </summary>
+        Vector<float>[] ByUnit(double[] all, int offset, int n)
         {
-            var r = new double[length];
-            Array.Copy(all, index * length, r, 0, length);
+            int lanes = Vector<float>.Count;
+            var row = new float[gateVectors * lanes];
+            var r = new Vector<float>[n * gateVectors];
+            for (int i = 0; i < n; i++)
+            {
+                for (int s = 0; s < 4; s++)
+                    for (int j = 0; j < hidden; j++)
+                        row[s * unitVectors * lanes + j] = (float)all[offset + (s * hidden + j) * n + i];
+                for (int v = 0; v < gateVectors; v++) r[i * gateVectors + v] = new Vector<float>(row, v * lanes);
+            }
             return r;
         }
 
-        protected override void Score(double[] x, double[] probabilities)
+        static float[] ToFloat(double[] v) => ToFloat(v, 0, v.Length);
+
+        static float[] ToFloat(double[] v, int offset, int length)
         {
-            Run(0, x, 0);
-            Run(1, x, hidden);
+            var r = new float[length];
+            for (int i = 0; i < length; i++) r[i] = (float)v[offset + i];
+            return r;
+        }
+
+        protected override void Score(double[] standardised, double[] probabilities)
+        {
+            for (int i = 0; i < x.Length; i++) x[i] = (float)standardised[i];
+            if (VectorMath.UseVectors)
+            {
+                Run(0, 0);
+                Run(1, hidden);
+            }
+            else
+            {
+                RunPlain(0, 0);
+                RunPlain(1, hidden);
+            }
             double max = double.NegativeInfinity;
             for (int k = 0; k < classes; k++)
             {
-                double z = fcB[k];
+                float z = fcB[k];
                 int row = k * 2 * hidden;
                 for (int j = 0; j < 2 * hidden; j++) z += fcW[row + j] * joined[j];
                 probabilities[k] = z;
@@ -84,40 +142,92 @@ namespace HeadGait
             for (int k = 0; k < classes; k++) probabilities[k] /= sum;
         }
 
-        /// <summary>One direction over the window; its final hidden state goes to joined[offset..].</summary>
-        void Run(int direction, double[] x, int offset)
+        /// <summary>
+        /// <see cref="Run"/> without SIMD lanes: one gate at a time, in float32 with the same activations (the sums in
+        /// another order, so within float precision of the lanes' answers).
+        /// </summary>
+        void RunPlain(int direction, int offset)
         {
-            var wi = wIh[direction];
-            var wh = wHh[direction];
-            var b = bias[direction];
-            Array.Clear(h, 0, hidden);
-            Array.Clear(c, 0, hidden);
+            var wi = plainIh[direction];
+            var wh = plainHh[direction];
+            var b = plainBias[direction];
+            Array.Clear(h, 0, h.Length);
+            Array.Clear(plainCell, 0, hidden);
             for (int n = 0; n < steps; n++)
             {
-                int t = direction == 0 ? n : steps - 1 - n;
-                int xo = t * inputs;
-                // The recurrent product dominates the cost.
-                VectorMath.MultiplyRows(wh, 4 * hidden, h, hidden, gates);
+                int xo = (direction == 0 ? n : steps - 1 - n) * inputs;
                 for (int g = 0; g < 4 * hidden; g++)
                 {
-                    double z = b[g];
-                    int ri = g * inputs;
-                    for (int i = 0; i < inputs; i++) z += wi[ri + i] * x[xo + i];
-                    gates[g] += z;
+                    float z = b[g];
+                    for (int i = 0; i < inputs; i++) z += wi[g * inputs + i] * x[xo + i];
+                    for (int j = 0; j < hidden; j++) z += wh[g * hidden + j] * h[j];
+                    plainGates[g] = z;
                 }
                 for (int j = 0; j < hidden; j++)
                 {
-                    double ig = Sigmoid(gates[j]);
-                    double fg = Sigmoid(gates[hidden + j]);
-                    double cg = Math.Tanh(gates[2 * hidden + j]);
-                    double og = Sigmoid(gates[3 * hidden + j]);
-                    c[j] = fg * c[j] + ig * cg;
-                    h[j] = og * Math.Tanh(c[j]);
+                    float c = VectorMath.Sigmoid(plainGates[hidden + j]) * plainCell[j]
+                        + VectorMath.Sigmoid(plainGates[j]) * VectorMath.Tanh(plainGates[2 * hidden + j]);
+                    plainCell[j] = c;
+                    h[j] = VectorMath.Sigmoid(plainGates[3 * hidden + j]) * VectorMath.Tanh(c);
                 }
             }
             Array.Copy(h, 0, joined, offset, hidden);
         }
 
-        static double Sigmoid(double z) => 1.0 / (1.0 + Math.Exp(-z));
+        /// <summary>One direction over the window; its final hidden state goes to joined[offset..].</summary>
+        void Run(int direction, int offset)
+        {
+            var wi = wIh[direction];
+            var wh = wHh[direction];
+            var b = bias[direction];
+            int lanes = Vector<float>.Count, nv = gateVectors, uv = unitVectors;
+            Array.Clear(h, 0, h.Length);
+            Array.Clear(cell, 0, cell.Length);
+            for (int n = 0; n < steps; n++)
+            {
+                int xo = (direction == 0 ? n : steps - 1 - n) * inputs;
+                int units = n == 0 ? 0 : hidden; // the state starts at zero: no recurrent product on the first step
+                int g = 0;
+                for (; g + Block <= nv; g += Block)
+                {
+                    Vector<float> a0 = b[g], a1 = b[g + 1], a2 = b[g + 2], a3 = b[g + 3];
+                    Vector<float> a4 = b[g + 4], a5 = b[g + 5], a6 = b[g + 6], a7 = b[g + 7];
+                    for (int i = 0; i < inputs; i++)
+                    {
+                        var xi = new Vector<float>(x[xo + i]);
+                        int r = i * nv + g;
+                        a0 += xi * wi[r]; a1 += xi * wi[r + 1]; a2 += xi * wi[r + 2]; a3 += xi * wi[r + 3];
+                        a4 += xi * wi[r + 4]; a5 += xi * wi[r + 5]; a6 += xi * wi[r + 6]; a7 += xi * wi[r + 7];
+                    }
+                    for (int j = 0; j < units; j++)
+                    {
+                        var hj = new Vector<float>(h[j]);
+                        int r = j * nv + g;
+                        a0 += hj * wh[r]; a1 += hj * wh[r + 1]; a2 += hj * wh[r + 2]; a3 += hj * wh[r + 3];
+                        a4 += hj * wh[r + 4]; a5 += hj * wh[r + 5]; a6 += hj * wh[r + 6]; a7 += hj * wh[r + 7];
+                    }
+                    gates[g] = a0; gates[g + 1] = a1; gates[g + 2] = a2; gates[g + 3] = a3;
+                    gates[g + 4] = a4; gates[g + 5] = a5; gates[g + 6] = a6; gates[g + 7] = a7;
+                }
+                for (; g < nv; g++)
+                {
+                    var a = b[g];
+                    for (int i = 0; i < inputs; i++) a += new Vector<float>(x[xo + i]) * wi[i * nv + g];
+                    for (int j = 0; j < units; j++) a += new Vector<float>(h[j]) * wh[j * nv + g];
+                    gates[g] = a;
+                }
+                for (int k = 0; k < uv; k++)
+                {
+                    var ig = VectorMath.Sigmoid(gates[k]);
+                    var fg = VectorMath.Sigmoid(gates[uv + k]);
+                    var cg = VectorMath.Tanh(gates[2 * uv + k]);
+                    var og = VectorMath.Sigmoid(gates[3 * uv + k]);
+                    var c = fg * cell[k] + ig * cg;
+                    cell[k] = c;
+                    (og * VectorMath.Tanh(c)).CopyTo(h, k * lanes);
+                }
+            }
+            Array.Copy(h, 0, joined, offset, hidden);
+        }
     }
 }

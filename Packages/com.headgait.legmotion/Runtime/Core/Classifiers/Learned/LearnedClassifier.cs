@@ -24,6 +24,7 @@ namespace HeadGait
         readonly double[] features;
         readonly double[] scores;
         readonly double[] probabilities;
+        readonly double[] batchRow, batchRowScores;
         readonly PhaseSequenceFilter filter;
         readonly CSharpNetwork network;
         ILearnedEvaluator evaluator;
@@ -72,6 +73,8 @@ namespace HeadGait
             features = new double[Features.Width];
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];
+            batchRow = new double[Features.Width];
+            batchRowScores = new double[Segments.ClassCount];
             filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
             stepPeriod = DefaultStepPeriod;
             network = new CSharpNetwork(this);
@@ -122,6 +125,22 @@ namespace HeadGait
 
         /// <summary>Scores every class from standardised features ([time][channel]); higher is more likely.</summary>
         protected abstract void Score(double[] standardised, double[] classScores);
+
+        /// <summary>
+        /// Scores <paramref name="windows"/> windows of standardised features (window by window) into
+        /// <paramref name="classScores"/> (window by window); one at a time through <see cref="Score"/> unless the model
+        /// gains from scoring them together. Every window must score exactly as it would alone.
+        /// </summary>
+        protected virtual void ScoreBatch(double[] features, int windows, double[] classScores)
+        {
+            int w = Features.Width, k = Segments.ClassCount;
+            for (int n = 0; n < windows; n++)
+            {
+                Array.Copy(features, n * w, batchRow, 0, w);
+                Score(batchRow, batchRowScores);
+                Array.Copy(batchRowScores, 0, classScores, n * k, k);
+            }
+        }
 
         /// <summary>The scores as probabilities over the classes (the BLSTM's already are).</summary>
         protected virtual void ToProbabilities(double[] classScores, double[] p) => Array.Copy(classScores, p, p.Length);
@@ -277,30 +296,19 @@ namespace HeadGait
             lastContactTime = now;
         }
 
-        /// <summary>The C# model as an evaluator: each window in turn through <see cref="Score"/>.</summary>
+        /// <summary>The C# model as an evaluator: the windows through <see cref="ScoreBatch"/>.</summary>
         sealed class CSharpNetwork : ILearnedEvaluator
         {
             readonly LearnedClassifier owner;
-            readonly double[] row, rowScores;
 
-            public CSharpNetwork(LearnedClassifier owner)
-            {
-                this.owner = owner;
-                row = new double[owner.Features.Width];
-                rowScores = new double[owner.Segments.ClassCount];
-            }
+            public CSharpNetwork(LearnedClassifier owner) => this.owner = owner;
 
             public void Evaluate(double[] features, int windows, double[] scores)
             {
-                int w = row.Length, k = rowScores.Length;
+                int w = owner.Features.Width, k = owner.Segments.ClassCount;
                 if (windows < 0 || features.Length < windows * w || scores.Length < windows * k)
                     throw new ArgumentException($"{windows} windows need {windows * w} features and {windows * k} scores, got {features.Length} and {scores.Length}.");
-                for (int n = 0; n < windows; n++)
-                {
-                    Array.Copy(features, n * w, row, 0, w);
-                    owner.Score(row, rowScores);
-                    Array.Copy(rowScores, 0, scores, n * k, k);
-                }
+                owner.ScoreBatch(features, windows, scores);
             }
         }
 

@@ -127,48 +127,60 @@ namespace HeadGait
             AtomicFile.WriteAllBytes(path, ToBytes());
         }
 
+        /// <summary>Reads a model file, streaming it: the tensors are read straight into their arrays, the file is never held whole.</summary>
         public static ModelFile Load(string path)
         {
             if (!File.Exists(path)) throw new ModelFormatException(path, "file not found");
-            byte[] bytes;
+            FileStream stream;
             try
             {
-                bytes = InputLimits.ReadAllBytes(path, InputLimits.MaxModelBytes, "a model file");
+                // Refused before reading when over the limit; a file of no size (empty, a device, a FIFO) is never opened, so
+                // a pipe cannot block the loader and /dev/zero cannot fill memory (InputLimits).
+                long length = new FileInfo(path).Length;
+                if (length == 0) throw new ModelFormatException(path, "is empty (or a device or pipe, which is read as empty)");
+                if (length > InputLimits.MaxModelBytes)
+                    throw new ModelFormatException(path, InputLimits.TooLarge(path, length, InputLimits.MaxModelBytes, "a model file").Problem);
+                stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read, 1);
             }
-            catch (InputLimitException e)
-            {
-                throw new ModelFormatException(path, e.Problem);
-            }
-            catch (IOException e)
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
                 throw new ModelFormatException(path, "cannot be read: " + e.Message);
             }
-            return Parse(bytes, path);
+            using (stream)
+            {
+                try
+                {
+                    return Parse(stream, path);
+                }
+                catch (IOException e)
+                {
+                    throw new ModelFormatException(path, "cannot be read: " + e.Message);
+                }
+            }
         }
 
         public static ModelFile Parse(byte[] bytes, string source = "model")
         {
+            if (bytes == null || bytes.Length == 0) throw new ModelFormatException(source ?? "model", "is empty");
+            using (var stream = new MemoryStream(bytes, false)) return Parse(stream, source);
+        }
+
+        /// <summary>Reads a model from a stream that knows its length (a file, or bytes in memory).</summary>
+        public static ModelFile Parse(Stream stream, string source = "model")
+        {
             var m = new ModelFile { Source = source ?? "model" };
-            if (bytes == null || bytes.Length == 0) throw new ModelFormatException(m.Source, "is empty");
-            int pos = 0;
+            var input = new Reader(stream);
+            if (input.Length == 0) throw new ModelFormatException(m.Source, "is empty");
             string NextLine()
             {
-                int start = pos;
-                while (pos < bytes.Length && bytes[pos] != (byte)'\n')
-                {
-                    if (pos - start > 100000) throw new ModelFormatException(m.Source, "header line longer than 100000 bytes: not a model file?");
-                    pos++;
-                }
-                if (pos >= bytes.Length) throw new ModelFormatException(m.Source, "header ends without an 'end' line: truncated or not a model file");
-                string line = Encoding.UTF8.GetString(bytes, start, pos - start).TrimEnd('\r');
-                pos++;
-                return line;
+                var line = input.ReadLine(100000, out bool tooLong);
+                if (tooLong) throw new ModelFormatException(m.Source, "header line longer than 100000 bytes: not a model file?");
+                if (line == null) throw new ModelFormatException(m.Source, "header ends without an 'end' line: truncated or not a model file");
+                return line.TrimEnd('\r');
             }
-            if (bytes.Length >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) pos = 3;
+            if (input.StartsWith(0xEF, 0xBB, 0xBF)) input.Skip(3);
             var magicBytes = Encoding.ASCII.GetBytes(Magic + "\n");
-            bool magicOk = bytes.Length - pos >= magicBytes.Length;
-            for (int i = 0; magicOk && i < magicBytes.Length - 1; i++) magicOk = bytes[pos + i] == magicBytes[i];
-            if (!magicOk) throw new ModelFormatException(m.Source, $"does not start with '{Magic}': not a HeadGait model file");
+            if (!input.StartsWith(magicBytes, magicBytes.Length - 1)) throw new ModelFormatException(m.Source, $"does not start with '{Magic}': not a HeadGait model file");
             string magic = NextLine();
             if (magic != Magic) throw new ModelFormatException(m.Source, $"first line must be '{Magic}': not a HeadGait model file");
             var specs = new List<(string name, bool f64, int[] shape)>();
@@ -201,29 +213,110 @@ namespace HeadGait
                 long count = 1;
                 foreach (var d in spec.shape) count *= d;
                 int size = spec.f64 ? 8 : 4;
-                if (count > int.MaxValue / 8 || pos + count * size > bytes.Length)
+                if (count > int.MaxValue / 8 || input.Position + count * size > input.Length)
                     throw new ModelFormatException(m.Source, $"tensor '{spec.name}' ({Shape(spec.shape)}) runs past the end of the file: truncated");
                 var data = new double[count];
                 for (int i = 0; i < count; i++)
                 {
-                    double v = spec.f64 ? BitConverter.ToDouble(LittleEndian(bytes, pos, 8), 0) : BitConverter.ToSingle(LittleEndian(bytes, pos, 4), 0);
+                    double v = spec.f64 ? input.ReadDouble() : input.ReadSingle();
                     if (double.IsNaN(v) || double.IsInfinity(v))
                         throw new ModelFormatException(m.Source, $"tensor '{spec.name}' value {i} is not finite");
                     data[i] = v;
-                    pos += size;
                 }
                 m.AddTensor(spec.name, spec.shape, data, spec.f64);
             }
-            if (pos != bytes.Length) throw new ModelFormatException(m.Source, $"{bytes.Length - pos} bytes after the last tensor: wrong shapes or a damaged file");
+            if (input.Position != input.Length) throw new ModelFormatException(m.Source, $"{input.Length - input.Position} bytes after the last tensor: wrong shapes or a damaged file");
             return m;
         }
 
-        static byte[] LittleEndian(byte[] bytes, int pos, int size)
+        /// <summary>Little-endian values and header lines from a stream, through one reused buffer (no array per value).</summary>
+        sealed class Reader
         {
-            var b = new byte[size];
-            Array.Copy(bytes, pos, b, 0, size);
-            if (!BitConverter.IsLittleEndian) Array.Reverse(b);
-            return b;
+            readonly Stream stream;
+            readonly byte[] buffer = new byte[1 << 16];
+            int start, end;
+            long consumed; // bytes before buffer[start]
+
+            public Reader(Stream stream)
+            {
+                this.stream = stream;
+                Length = stream.Length - stream.Position;
+            }
+
+            public long Length { get; }
+            public long Position => consumed;
+
+            /// <summary>Makes at least <paramref name="n"/> bytes available unless the stream ends first; returns how many are.</summary>
+            int Fill(int n)
+            {
+                if (end - start >= n) return end - start;
+                Array.Copy(buffer, start, buffer, 0, end - start);
+                end -= start;
+                start = 0;
+                while (end < n)
+                {
+                    int got = stream.Read(buffer, end, buffer.Length - end);
+                    if (got <= 0) break;
+                    end += got;
+                }
+                return end - start;
+            }
+
+            public bool StartsWith(params byte[] prefix) => StartsWith(prefix, prefix.Length);
+
+            /// <summary>Whether the first <paramref name="n"/> bytes are the prefix's (and the stream holds the whole prefix's length).</summary>
+            public bool StartsWith(byte[] prefix, int n)
+            {
+                if (Fill(prefix.Length) < prefix.Length) return false;
+                for (int i = 0; i < n; i++)
+                    if (buffer[start + i] != prefix[i]) return false;
+                return true;
+            }
+
+            public void Skip(int n)
+            {
+                Fill(n);
+                start += n;
+                consumed += n;
+            }
+
+            /// <summary>The next line without its '\n', or null when the stream ends first.</summary>
+            public string ReadLine(int maxBytes, out bool tooLong)
+            {
+                tooLong = false;
+                var bytes = new List<byte>();
+                while (true)
+                {
+                    if (Fill(1) < 1) return null;
+                    byte b = buffer[start++];
+                    consumed++;
+                    if (b == (byte)'\n') return Encoding.UTF8.GetString(bytes.ToArray());
+                    if (bytes.Count > maxBytes)
+                    {
+                        tooLong = true;
+                        return null;
+                    }
+                    bytes.Add(b);
+                }
+            }
+
+            public double ReadDouble()
+            {
+                if (Fill(8) < 8) throw new EndOfStreamException();
+                long bits = System.Buffers.Binary.BinaryPrimitives.ReadInt64LittleEndian(new ReadOnlySpan<byte>(buffer, start, 8));
+                start += 8;
+                consumed += 8;
+                return BitConverter.Int64BitsToDouble(bits);
+            }
+
+            public float ReadSingle()
+            {
+                if (Fill(4) < 4) throw new EndOfStreamException();
+                int bits = System.Buffers.Binary.BinaryPrimitives.ReadInt32LittleEndian(new ReadOnlySpan<byte>(buffer, start, 4));
+                start += 4;
+                consumed += 4;
+                return BitConverter.Int32BitsToSingle(bits);
+            }
         }
 
         static string Shorten(string s) => s.Length > 60 ? s.Substring(0, 60) + "..." : s;
