@@ -5,7 +5,7 @@ using UnityEngine;
 
 namespace HeadGait.Editor
 {
-    /// <summary>Tools > HeadGait: evaluate a recording and train a COR template from inside the editor.</summary>
+    /// <summary>Tools > HeadGait: evaluate a recording, train a COR template and build the locomotion Animator Controller from inside the editor.</summary>
     public static class HeadGaitMenu
     {
         [MenuItem("Tools/HeadGait/Evaluate Recording...")]
@@ -54,6 +54,30 @@ namespace HeadGait.Editor
             {
                 EditorUtility.DisplayDialog("HeadGait", e.Message, "OK");
             }
+        }
+
+        /// <summary>The package's gait clips, as the Animator Controller's states play them.</summary>
+        const string ClipFolder = "Packages/com.headgait.legmotion/Runtime/Animation/";
+
+        [MenuItem("Tools/HeadGait/Create Animator Controller...")]
+        static void CreateAnimatorController()
+        {
+            string path = EditorUtility.SaveFilePanelInProject("Create the HeadGait locomotion Animator Controller", "HeadGait Legs", "controller",
+                "States, parameters and transitions as the package's HeadGait Legs.controller; its states play the package's gait clips.");
+            if (string.IsNullOrEmpty(path)) return;
+            var clips = new System.Collections.Generic.Dictionary<LocomotionState, Motion>();
+            foreach (var state in LocomotionController.States)
+            {
+                var clip = AssetDatabase.LoadAssetAtPath<AnimationClip>(ClipFolder + GaitClips.Name(state) + ".anim");
+                if (clip == null)
+                {
+                    EditorUtility.DisplayDialog("HeadGait", $"The gait clip {ClipFolder}{GaitClips.Name(state)}.anim is missing; reinstall the package.", "OK");
+                    return;
+                }
+                clips[state] = clip;
+            }
+            LocomotionControllerBuilder.Create(path, clips);
+            Debug.Log($"HeadGait: wrote {path}");
         }
 
         static void Append(StringBuilder sb, ReplayResult r)
