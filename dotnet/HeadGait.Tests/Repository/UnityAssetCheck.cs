@@ -419,7 +419,7 @@ namespace HeadGait.Tests
                 double ic = map.StridePositionOfOnset(foot, GaitPhase.InitialContact);
                 // A contact at stride 0 is the loop's wrap: down at the first key, in the air at the one before the last.
                 var down = FootHeight(foot, ic);
-                var before = FootHeight(foot, (ic == 0 ? 1 : ic) - GaitClipYaml.BeforeEvent);
+                var before = FootHeight(foot, (ic == 0 ? 1 : ic) - GaitClipCurves.BeforeEvent);
                 if (down == null || before == null)
                     problems.Add($"{file}: no key at the {foot} initial contact (stride {ic:F4} of the phase map, {ic * length:F4} s)");
                 else if (Math.Abs(down.Value) > Contact || before.Value <= Contact)
