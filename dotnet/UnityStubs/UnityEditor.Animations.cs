@@ -16,8 +16,49 @@ namespace UnityEngine
     // Modules/Animation/ScriptBindings/RuntimeAnimatorController.bindings.cs: public class RuntimeAnimatorController : Object.
     public class RuntimeAnimatorController : Object { }
 
-    // Modules/Animation/ScriptBindings/AnimationClip.bindings.cs: public sealed class AnimationClip : Motion.
-    public sealed class AnimationClip : Motion { }
+    // Modules/Animation/ScriptBindings/AnimationClip.bindings.cs: public sealed class AnimationClip : Motion; frameRate
+    // (native, 60 for a new clip). Its curves and settings are native too: here the stand-in AnimationUtility keeps them.
+    public sealed class AnimationClip : Motion
+    {
+        public float frameRate { get; set; } = 60;
+        internal readonly List<(UnityEditor.EditorCurveBinding Binding, Keyframe[] Keys)> editorCurves = new List<(UnityEditor.EditorCurveBinding, Keyframe[])>();
+        internal UnityEditor.AnimationClipSettings settings = new UnityEditor.AnimationClipSettings { stopTime = 1 };
+    }
+
+    // Runtime/Export/Math/AnimationCurve.bindings.cs: struct Keyframe(time, value, inTangent, outTangent).
+    public struct Keyframe
+    {
+        public Keyframe(float time, float value) : this(time, value, 0, 0) { }
+
+        public Keyframe(float time, float value, float inTangent, float outTangent)
+        {
+            this.time = time;
+            this.value = value;
+            this.inTangent = inTangent;
+            this.outTangent = outTangent;
+        }
+
+        public float time { get; set; }
+        public float value { get; set; }
+        public float inTangent { get; set; }
+        public float outTangent { get; set; }
+    }
+
+    // Runtime/Export/Math/AnimationCurve.bindings.cs: class AnimationCurve(params Keyframe[] keys); keys hands out a copy.
+    public class AnimationCurve
+    {
+        Keyframe[] keyList;
+
+        public AnimationCurve(params Keyframe[] keys) { keyList = (Keyframe[])(keys ?? new Keyframe[0]).Clone(); }
+
+        public Keyframe[] keys
+        {
+            get => (Keyframe[])keyList.Clone();
+            set => keyList = (Keyframe[])(value ?? new Keyframe[0]).Clone();
+        }
+
+        public int length => keyList.Length;
+    }
 }
 
 namespace UnityEditor.Animations
@@ -363,6 +404,70 @@ namespace UnityEditor
 
         // SaveAssets(): writes changed assets to disk; nothing to write here.
         public static void SaveAssets() { }
+    }
+
+    // Editor/Mono/Animation/EditorCurveBinding.bindings.cs: struct EditorCurveBinding { path, type, propertyName };
+    // FloatCurve(inPath, inType, inPropertyName) makes a float curve's binding.
+    public struct EditorCurveBinding
+    {
+        public string path;
+        public string propertyName;
+        public Type type { get; set; }
+
+        public static EditorCurveBinding FloatCurve(string inPath, Type inType, string inPropertyName)
+            => new EditorCurveBinding { path = inPath, type = inType, propertyName = inPropertyName };
+    }
+
+    // Editor/Mono/Animation/AnimationClipSettings.bindings.cs: a class of public fields, marshalled as a struct.
+    public class AnimationClipSettings
+    {
+        public float startTime;
+        public float stopTime;
+        public float cycleOffset;
+        public bool loopTime;
+        public bool loopBlend;
+        public bool loopBlendOrientation;
+        public bool loopBlendPositionY;
+        public bool loopBlendPositionXZ;
+        public bool keepOriginalOrientation;
+        public bool keepOriginalPositionY;
+        public bool keepOriginalPositionXZ;
+        public bool heightFromFeet;
+        public bool mirror;
+
+        internal AnimationClipSettings Copy() => (AnimationClipSettings)MemberwiseClone();
+    }
+
+    // Editor/Mono/Animation/AnimationUtility.bindings.cs: the editor curves of a clip (SetEditorCurve adds, replaces or,
+    // with a null curve, removes the curve of a binding; the clip keeps a copy) and its settings (copied each way).
+    public partial class AnimationUtility
+    {
+        public static void SetEditorCurve(AnimationClip clip, EditorCurveBinding binding, AnimationCurve curve)
+        {
+            if (clip == null) throw new ArgumentNullException(nameof(clip));
+            int at = clip.editorCurves.FindIndex(c => Same(c.Binding, binding));
+            if (curve == null)
+            {
+                if (at >= 0) clip.editorCurves.RemoveAt(at);
+                return;
+            }
+            if (at >= 0) clip.editorCurves[at] = (binding, curve.keys);
+            else clip.editorCurves.Add((binding, curve.keys));
+        }
+
+        public static AnimationCurve GetEditorCurve(AnimationClip clip, EditorCurveBinding binding)
+        {
+            int at = clip.editorCurves.FindIndex(c => Same(c.Binding, binding));
+            return at < 0 ? null : new AnimationCurve(clip.editorCurves[at].Keys);
+        }
+
+        public static EditorCurveBinding[] GetCurveBindings(AnimationClip clip) => clip.editorCurves.ConvertAll(c => c.Binding).ToArray();
+
+        public static AnimationClipSettings GetAnimationClipSettings(AnimationClip clip) => clip.settings.Copy();
+
+        public static void SetAnimationClipSettings(AnimationClip clip, AnimationClipSettings srcClipInfo) => clip.settings = srcClipInfo.Copy();
+
+        static bool Same(EditorCurveBinding a, EditorCurveBinding b) => a.path == b.path && a.type == b.type && a.propertyName == b.propertyName;
     }
 
     // Editor/Mono/EditorUtility.cs: SaveFilePanelInProject(title, defaultName, extension, message) returns a project-relative

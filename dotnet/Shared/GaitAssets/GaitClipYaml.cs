@@ -22,7 +22,6 @@ namespace HeadGait.Tooling
             sb.Append("  m_Bounds:\n    m_Center: {x: 0, y: 0, z: 0}\n    m_Extent: {x: 0, y: 0, z: 0}\n");
             UnityYaml.AppendClipSettings(sb, GaitClipCurves.Length, GaitClipCurves.Loops(clip), bakeRoot: false);
             sb.Append("  m_EditorCurves:\n");
-            string[] axes = { "x", "y", "z" };
             foreach (var channel in curves.Channels)
             {
                 for (int j = 0; j < 3; j++)
@@ -39,7 +38,7 @@ namespace HeadGait.Tooling
                         sb.Append("        tangentMode: 0\n        weightedMode: 0\n        inWeight: 0.33333334\n        outWeight: 0.33333334\n");
                     }
                     sb.Append("      m_PreInfinity: 2\n      m_PostInfinity: 2\n      m_RotationOrder: 4\n");
-                    sb.Append("    attribute: ").Append(channel.Property).Append('.').Append(axes[j]).Append('\n');
+                    sb.Append("    attribute: ").Append(channel.Attribute(j)).Append('\n');
                     sb.Append("    path: ").Append(channel.Path).Append('\n');
                     sb.Append("    classID: 4\n    script: {fileID: 0}\n");
                 }

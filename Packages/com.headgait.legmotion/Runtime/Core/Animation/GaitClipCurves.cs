@@ -18,6 +18,9 @@ namespace HeadGait
 
         public string Property => IsPosition ? "m_LocalPosition" : "localEulerAnglesRaw";
 
+        /// <summary>The float curve of one component (0 x, 1 y, 2 z): "m_LocalPosition.y", "localEulerAnglesRaw.x", ...</summary>
+        public string Attribute(int component) => Property + "." + "xyz"[component];
+
         /// <summary>A component that never changes needs only its first and last key.</summary>
         public bool IsConstant(int component)
         {
