@@ -8,61 +8,23 @@ using System.Collections.Generic;
 using UnityEngine;
 using Object = UnityEngine.Object;
 
-namespace UnityEngine
-{
-    // Modules/Animation/ScriptBindings/Motion.bindings.cs: public partial class Motion : Object (what a state plays).
-    public class Motion : Object { }
-
-    // Modules/Animation/ScriptBindings/RuntimeAnimatorController.bindings.cs: public class RuntimeAnimatorController : Object.
-    public class RuntimeAnimatorController : Object { }
-
-    // Modules/Animation/ScriptBindings/AnimationClip.bindings.cs: public sealed class AnimationClip : Motion; frameRate
-    // (native, 60 for a new clip). Its curves and settings are native too: here the stand-in AnimationUtility keeps them.
-    public sealed class AnimationClip : Motion
-    {
-        public float frameRate { get; set; } = 60;
-        internal readonly List<(UnityEditor.EditorCurveBinding Binding, Keyframe[] Keys)> editorCurves = new List<(UnityEditor.EditorCurveBinding, Keyframe[])>();
-        internal UnityEditor.AnimationClipSettings settings = new UnityEditor.AnimationClipSettings { stopTime = 1 };
-    }
-
-    // Runtime/Export/Math/AnimationCurve.bindings.cs: struct Keyframe(time, value, inTangent, outTangent).
-    public struct Keyframe
-    {
-        public Keyframe(float time, float value) : this(time, value, 0, 0) { }
-
-        public Keyframe(float time, float value, float inTangent, float outTangent)
-        {
-            this.time = time;
-            this.value = value;
-            this.inTangent = inTangent;
-            this.outTangent = outTangent;
-        }
-
-        public float time { get; set; }
-        public float value { get; set; }
-        public float inTangent { get; set; }
-        public float outTangent { get; set; }
-    }
-
-    // Runtime/Export/Math/AnimationCurve.bindings.cs: class AnimationCurve(params Keyframe[] keys); keys hands out a copy.
-    public class AnimationCurve
-    {
-        Keyframe[] keyList;
-
-        public AnimationCurve(params Keyframe[] keys) { keyList = (Keyframe[])(keys ?? new Keyframe[0]).Clone(); }
-
-        public Keyframe[] keys
-        {
-            get => (Keyframe[])keyList.Clone();
-            set => keyList = (Keyframe[])(value ?? new Keyframe[0]).Clone();
-        }
-
-        public int length => keyList.Length;
-    }
-}
-
 namespace UnityEditor.Animations
 {
+    // Unity's editor code copies arrays in and out of native code and grows them with ArrayUtility.Add
+    // (Editor/Mono/Utils/ArrayUtility.cs); the stand-ins do the same with these.
+    internal static class Arrays
+    {
+        internal static T[] Copy<T>(T[] array) => array == null ? new T[0] : (T[])array.Clone();
+
+        internal static T[] Append<T>(T[] array, T item)
+        {
+            var grown = new T[array.Length + 1];
+            Array.Copy(array, grown, array.Length);
+            grown[array.Length] = item;
+            return grown;
+        }
+    }
+
     // Editor/Mono/Animation/StateMachine.bindings.cs: enum AnimatorConditionMode (If = 1, IfNot = 2, Greater = 3, Less = 4,
     // Equals = 6, NotEqual = 7; 5 was ExitTime).
     public enum AnimatorConditionMode
@@ -109,17 +71,14 @@ namespace UnityEditor.Animations
         // extern AnimatorCondition[] conditions { get; set; }: marshalled, so a caller holds a copy.
         public AnimatorCondition[] conditions
         {
-            get => (AnimatorCondition[])conditionList.Clone();
-            set => conditionList = (AnimatorCondition[])(value ?? new AnimatorCondition[0]).Clone();
+            get => Arrays.Copy(conditionList);
+            set => conditionList = Arrays.Copy(value);
         }
 
         // StateMachine.cs: AddCondition(AnimatorConditionMode mode, float threshold, string parameter) appends one condition.
         public void AddCondition(AnimatorConditionMode mode, float threshold, string parameter)
         {
-            var list = conditions;
-            Array.Resize(ref list, list.Length + 1);
-            list[list.Length - 1] = new AnimatorCondition { mode = mode, parameter = parameter, threshold = threshold };
-            conditions = list;
+            conditions = Arrays.Append(conditions, new AnimatorCondition { mode = mode, parameter = parameter, threshold = threshold });
         }
     }
 
@@ -160,17 +119,14 @@ namespace UnityEditor.Animations
         // extern AnimatorStateTransition[] transitions { get; set; }: a caller holds a copy of the array.
         public AnimatorStateTransition[] transitions
         {
-            get => (AnimatorStateTransition[])transitionList.Clone();
-            set => transitionList = (AnimatorStateTransition[])(value ?? new AnimatorStateTransition[0]).Clone();
+            get => Arrays.Copy(transitionList);
+            set => transitionList = Arrays.Copy(value);
         }
 
         // StateMachine.cs: AddTransition(AnimatorStateTransition) appends it to transitions.
         public void AddTransition(AnimatorStateTransition transition)
         {
-            var list = transitions;
-            Array.Resize(ref list, list.Length + 1);
-            list[list.Length - 1] = transition;
-            transitions = list;
+            transitions = Arrays.Append(transitions, transition);
         }
 
         // StateMachine.cs: AddTransition(AnimatorState destinationState) = CreateTransition(false) (hasExitTime false,
@@ -201,8 +157,8 @@ namespace UnityEditor.Animations
 
         public ChildAnimatorState[] states
         {
-            get => (ChildAnimatorState[])stateList.Clone();
-            set => stateList = (ChildAnimatorState[])(value ?? new ChildAnimatorState[0]).Clone();
+            get => Arrays.Copy(stateList);
+            set => stateList = Arrays.Copy(value);
         }
 
         public AnimatorState defaultState { get; set; }
@@ -212,14 +168,14 @@ namespace UnityEditor.Animations
 
         public AnimatorStateTransition[] anyStateTransitions
         {
-            get => (AnimatorStateTransition[])anyList.Clone();
-            set => anyList = (AnimatorStateTransition[])(value ?? new AnimatorStateTransition[0]).Clone();
+            get => Arrays.Copy(anyList);
+            set => anyList = Arrays.Copy(value);
         }
 
         public AnimatorTransition[] entryTransitions
         {
-            get => (AnimatorTransition[])entryList.Clone();
-            set => entryList = (AnimatorTransition[])(value ?? new AnimatorTransition[0]).Clone();
+            get => Arrays.Copy(entryList);
+            set => entryList = Arrays.Copy(value);
         }
 
         // extern string MakeUniqueStateName(string name): native; here a taken name gets " 0", " 1", ... appended.
@@ -243,11 +199,8 @@ namespace UnityEditor.Animations
         // StateMachine.cs: AddState(AnimatorState state, Vector3 position); a state already present is discarded (with a warning).
         public void AddState(AnimatorState state, Vector3 position)
         {
-            var list = states;
-            if (Array.Exists(list, c => c.state == state)) return;
-            Array.Resize(ref list, list.Length + 1);
-            list[list.Length - 1] = new ChildAnimatorState { state = state, position = position };
-            states = list;
+            if (Array.Exists(stateList, c => c.state == state)) return;
+            states = Arrays.Append(states, new ChildAnimatorState { state = state, position = position });
         }
     }
 
@@ -323,10 +276,7 @@ namespace UnityEditor.Animations
         // AnimatorController.cs: AddLayer(AnimatorControllerLayer layer) appends it to layers.
         public void AddLayer(AnimatorControllerLayer layer)
         {
-            var list = layers;
-            Array.Resize(ref list, list.Length + 1);
-            list[list.Length - 1] = layer;
-            layers = list;
+            layers = Arrays.Append(layers, layer);
         }
 
         // AnimatorController.cs: AddParameter(string name, AnimatorControllerParameterType type): a unique name, then appended.
@@ -335,10 +285,7 @@ namespace UnityEditor.Animations
 
         public void AddParameter(AnimatorControllerParameter paramater)
         {
-            var list = parameters;
-            Array.Resize(ref list, list.Length + 1);
-            list[list.Length - 1] = paramater;
-            parameters = list;
+            parameters = Arrays.Append(parameters, paramater);
         }
 
         // AnimatorController.cs: CreateAnimatorControllerAtPath(string path): a controller named Path.GetFileName(path),
@@ -442,30 +389,42 @@ namespace UnityEditor
     // with a null curve, removes the curve of a binding; the clip keeps a copy) and its settings (copied each way).
     public partial class AnimationUtility
     {
+        // What Unity keeps natively in each clip: its editor curves, in the order first set, and its settings.
+        sealed class ClipData
+        {
+            internal readonly List<(EditorCurveBinding Binding, Keyframe[] Keys)> curves = new List<(EditorCurveBinding, Keyframe[])>();
+            internal AnimationClipSettings settings = new AnimationClipSettings { stopTime = 1 };
+        }
+
+        static readonly System.Runtime.CompilerServices.ConditionalWeakTable<AnimationClip, ClipData> data = new System.Runtime.CompilerServices.ConditionalWeakTable<AnimationClip, ClipData>();
+
+        static ClipData Of(AnimationClip clip) => data.GetValue(clip ?? throw new ArgumentNullException(nameof(clip)), _ => new ClipData());
+
         public static void SetEditorCurve(AnimationClip clip, EditorCurveBinding binding, AnimationCurve curve)
         {
-            if (clip == null) throw new ArgumentNullException(nameof(clip));
-            int at = clip.editorCurves.FindIndex(c => Same(c.Binding, binding));
+            var curves = Of(clip).curves;
+            int at = curves.FindIndex(c => Same(c.Binding, binding));
             if (curve == null)
             {
-                if (at >= 0) clip.editorCurves.RemoveAt(at);
+                if (at >= 0) curves.RemoveAt(at);
                 return;
             }
-            if (at >= 0) clip.editorCurves[at] = (binding, curve.keys);
-            else clip.editorCurves.Add((binding, curve.keys));
+            if (at >= 0) curves[at] = (binding, curve.keys);
+            else curves.Add((binding, curve.keys));
         }
 
         public static AnimationCurve GetEditorCurve(AnimationClip clip, EditorCurveBinding binding)
         {
-            int at = clip.editorCurves.FindIndex(c => Same(c.Binding, binding));
-            return at < 0 ? null : new AnimationCurve(clip.editorCurves[at].Keys);
+            var curves = Of(clip).curves;
+            int at = curves.FindIndex(c => Same(c.Binding, binding));
+            return at < 0 ? null : new AnimationCurve(curves[at].Keys);
         }
 
-        public static EditorCurveBinding[] GetCurveBindings(AnimationClip clip) => clip.editorCurves.ConvertAll(c => c.Binding).ToArray();
+        public static EditorCurveBinding[] GetCurveBindings(AnimationClip clip) => Of(clip).curves.ConvertAll(c => c.Binding).ToArray();
 
-        public static AnimationClipSettings GetAnimationClipSettings(AnimationClip clip) => clip.settings.Copy();
+        public static AnimationClipSettings GetAnimationClipSettings(AnimationClip clip) => Of(clip).settings.Copy();
 
-        public static void SetAnimationClipSettings(AnimationClip clip, AnimationClipSettings srcClipInfo) => clip.settings = srcClipInfo.Copy();
+        public static void SetAnimationClipSettings(AnimationClip clip, AnimationClipSettings srcClipInfo) => Of(clip).settings = srcClipInfo.Copy();
 
         static bool Same(EditorCurveBinding a, EditorCurveBinding b) => a.path == b.path && a.type == b.type && a.propertyName == b.propertyName;
     }
