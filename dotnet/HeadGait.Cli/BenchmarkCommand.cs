@@ -52,26 +52,30 @@ namespace HeadGait.Cli
             if (jolted) variants.Add(("jolted", $"with a {RecordingAugmentation.JoltHz:F0} Hz jolt at each contact and sensor noise (content above 12 Hz)", RecordingAugmentation.Jolted));
             if (sensorRate.HasValue)
             {
-                if (!(sensorRate > 0) || double.IsInfinity(sensorRate.Value)) throw new UsageException("--sensor-rate must be a positive number of Hz");
-                double rate = sensorRate.Value;
+                double rate = OptionValues.Number(sensorRate.Value, "--sensor-rate", 1, 2000);
                 string hz = rate.ToString("0.#", System.Globalization.CultureInfo.InvariantCulture) + " Hz";
                 variants.Add((hz, $"as a sensor sampling at {hz} gives them", r => RecordingAugmentation.AtRate(r, rate)));
             }
             // Seeded by the clip's name, so every fold and classifier scores the same made-up starts and stops.
             if (startStop) variants.Add(("start-stop", "made into walks that start and stop (walking clips only)",
                 r => RecordingAugmentation.StartingAndStopping(r, new DeterministicRandom(DeterministicRandom.SeedFrom(r.Name)))));
+            var schemeList = OptionValues.Schemes(schemes, "--cv", allowNone: true);
+            OptionValues.Count(augment, "--augment", 0, GaitTraining.MaxAugmentedCopies);
+            OptionValues.Folder(modelFolder, "--models");
+            OptionValues.Path(perRecordingCsv, "--per-recording");
+            var names = Classifiers.Parse(classifierList);
             var perRecordingRows = new List<RecordingScoresCsv.Row>();
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
             string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
-            var names = Classifiers.Parse(classifierList);
             var byName = recordings.ToDictionary(r => r.Name);
             Console.WriteLine($"HeadGait benchmark: {recordings.Count} labelled recordings from {string.Join(", ", data)}");
-            foreach (var scheme in schemes.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+            foreach (var scheme in schemeList)
             {
                 if (scheme == "none") continue;
                 var folds = CrossValidation.Make(scheme, byName.Keys);
+                using var progress = new Progress($"benchmark {scheme} CV", folds.Count * names.Count);
                 var pooled = names.ToDictionary(n => n, n => new List<ReplayResult>());
                 var pooledPose = names.ToDictionary(n => n, n => new List<ReplayResult>());
                 var pooledVariant = variants.Select(_ => names.ToDictionary(n => n, n => new List<ReplayResult>())).ToList();
@@ -108,6 +112,7 @@ namespace HeadGait.Cli
                             perRecordingRows.AddRange(scored.Select(r => new RecordingScoresCsv.Row { Scheme = scheme, Fold = fold.Name, Variant = variant, Result = r }));
                             return scored;
                         }
+                        progress.Step($"{fold.Name} {name}");
                         var results = Score(test, null);
                         pooled[name].AddRange(results);
                         foldRows.Add((fold.Name, results[0].Classifier, results));

@@ -16,6 +16,7 @@ namespace HeadGait.Cli
                 else if (GaitModels.Names.Contains(part) || part == "svm-raw" || part == "blstm-raw") names.Add(part);
                 else throw new UsageException($"unknown classifier '{part}' (thr, cor, svm, blstm, all; svm-raw, blstm-raw: without the time filter)");
             }
+            if (names.Count == 0) throw new UsageException($"--classifier '{list}' names no classifier (thr, cor, svm, blstm or all)");
             return names.Distinct().ToList();
         }
 

@@ -18,6 +18,7 @@ namespace HeadGait.Cli
                 string models = SamplePaths.FindModelsFolder() ?? throw new UsageException("package folder not found");
                 string package = Path.GetDirectoryName(models);
                 string path = parse.GetValue(template) ?? Path.Combine(models, GaitModels.CorrelationFile);
+                if (!File.Exists(path)) throw new UsageException($"--template: no such file: {path}");
                 var map = CorrelationTemplate.Load(path).PhaseMap;
                 foreach (var written in GaitAssetFiles.WriteAll(package, map)) Console.WriteLine($"wrote {written}");
                 Console.WriteLine($"phase map from {path}: right initial contact at stride {map.RightOffset:F4}");

@@ -27,43 +27,66 @@ namespace HeadGait.Cli
 
         static int Run(string[] files, string classifierList, string modelFolder, string traceDir, bool strict)
         {
+            var names = Classifiers.Parse(classifierList);
+            OptionValues.Folder(modelFolder, "--models");
+            OptionValues.Path(traceDir, "--trace");
             bool samples = files == null || files.Length == 0;
             var paths = samples ? SamplePaths.List(SamplePaths.RequireRecordingsFolder(), "eval").ToList() : Inputs.Expand(files, "*.csv");
             if (paths.Count == 0) throw new UsageException("no recordings to replay");
-            var recordings = Inputs.LoadRecordings(paths, strict);
             string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
             var models = Classifiers.Load(folder);
-            var names = Classifiers.Parse(classifierList);
 
             Console.WriteLine(samples
-                ? $"HeadGait replay of the package's {recordings.Count} generated sample recordings (synthetic walkers, not people), models from {folder}"
-                : $"HeadGait replay of {recordings.Count} recording(s), models from {folder}");
-            foreach (var r in recordings.Where(r => r.Warnings.Count > 0))
+                ? $"HeadGait replay of the package's {paths.Count} generated sample recordings (synthetic walkers, not people), models from {folder}"
+                : $"HeadGait replay of {paths.Count} recording(s), models from {folder}");
+
+            // One recording at a time: it is read, replayed by every classifier and let go, so memory holds one recording's
+            // samples however many files are given (only the scores are kept).
+            var results = names.ToDictionary(n => n, n => new List<ReplayResult>());
+            var warned = new HashSet<string>();
+            var empty = new List<string>();
+            bool labelled = false;
+            using (var progress = new Progress("replay", paths.Count * names.Count))
             {
-                Console.WriteLine($"{r.Name}: skipped {r.Warnings.Count} unreadable row(s):");
-                foreach (var w in r.Warnings.Take(5)) Console.WriteLine($"  {w}");
+                foreach (var path in paths)
+                {
+                    var rec = Inputs.LoadRecordings(new[] { path }, strict)[0];
+                    if (rec.Warnings.Count > 0)
+                    {
+                        Console.WriteLine($"{rec.Name}: skipped {rec.Warnings.Count} unreadable row(s):");
+                        foreach (var w in rec.Warnings.Take(5)) Console.WriteLine($"  {w}");
+                    }
+                    if (rec.Samples.Count == 0)
+                    {
+                        // Nothing to replay: every row was unreadable (decimal commas, NaN) or the file holds none.
+                        empty.Add(path);
+                        progress.Step(rec.Name);
+                        continue;
+                    }
+                    labelled |= rec.HasTruth;
+                    foreach (var name in names)
+                    {
+                        var c = models.Create(name, out string warning);
+                        if (warning != null && warned.Add(name)) Console.WriteLine($"warning: {warning}");
+                        var res = ReplayEvaluator.Run(rec, c, keepTrace: traceDir != null);
+                        if (traceDir != null)
+                        {
+                            WriteTrace(traceDir, name, res);
+                            res.Predictions = null; // written: not kept
+                            res.Frames = null;
+                        }
+                        results[name].Add(res);
+                        progress.Step($"{rec.Name} {name}");
+                    }
+                }
             }
             Console.WriteLine();
-
-            var results = new Dictionary<string, List<ReplayResult>>();
-            foreach (var name in names)
-            {
-                var list = new List<ReplayResult>();
-                foreach (var rec in recordings)
-                {
-                    var c = models.Create(name, out string warning);
-                    if (warning != null && rec == recordings[0]) Console.WriteLine($"warning: {warning}");
-                    var res = ReplayEvaluator.Run(rec, c, keepTrace: traceDir != null);
-                    list.Add(res);
-                    if (traceDir != null) WriteTrace(traceDir, name, res);
-                }
-                results[name] = list;
-            }
+            foreach (var path in empty) Console.Error.WriteLine($"error: {path}: no usable samples to replay");
+            if (results[names[0]].Count == 0) return 1;
             // Every classifier sees the same samples, so the clock policy's account is the same for all: print it once.
             foreach (var r in results[names[0]].Where(r => r.SkipSummary.Length > 0))
                 Console.WriteLine($"{r.Recording}: the clock policy {r.SkipSummary}");
             if (results[names[0]].Any(r => r.SkipSummary.Length > 0)) Console.WriteLine();
-            bool labelled = recordings.Any(r => r.HasTruth);
             if (labelled)
             {
                 Report.PhaseHeader();
@@ -91,7 +114,7 @@ namespace HeadGait.Cli
                 Console.WriteLine("These recordings come from the package's own walking generator: they show the pipeline works end to end;");
                 Console.WriteLine("accuracy on people is measured by `headgait benchmark` on real recordings (see the README).");
             }
-            return 0;
+            return empty.Count > 0 ? 1 : 0;
         }
 
         static void WriteTrace(string dir, string name, ReplayResult r)

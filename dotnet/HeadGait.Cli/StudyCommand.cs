@@ -50,6 +50,7 @@ namespace HeadGait.Cli
         static int WriteScene(string package)
         {
             string path = StudyScene.PathIn(package);
+            PrimitiveMaterials.WriteAll(package); // the scene's renderers use the package's materials
             File.WriteAllText(path, StudyScene.Yaml(StudyScene.ScriptsIn(package)));
             Console.WriteLine($"wrote {path}");
             return 0;

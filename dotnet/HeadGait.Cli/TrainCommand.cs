@@ -46,15 +46,24 @@ namespace HeadGait.Cli
             };
             command.SetAction(parse =>
             {
+                int copies = OptionValues.Count(parse.GetValue(augment), "--augment", 0, GaitTraining.MaxAugmentedCopies);
+                int every = OptionValues.Count(parse.GetValue(stride), "--stride", 1, 1000);
+                double leadSeconds = OptionValues.Number(parse.GetValue(lead), "--label-lead", -1, 1);
+                var schemeList = parse.GetValue(cv) == null ? new List<string>() : OptionValues.Schemes(parse.GetValue(cv), "--cv", allowNone: false);
+                string kinds = parse.GetValue(learned);
+                if (!IsLearnedList(kinds)) throw new UsageException($"--learned must be svm, blstm, svm,blstm or none, not '{kinds}'");
+                OptionValues.Path(parse.GetValue(output), "--out");
+                OptionValues.Path(parse.GetValue(cvModels), "--cv-models");
+                OptionValues.Path(parse.GetValue(work), "--work");
                 string outDir = parse.GetValue(output) ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --out and no package Models/ folder found");
                 Directory.CreateDirectory(outDir);
                 var recordings = Inputs.LoadRecordings(Inputs.Expand(parse.GetValue(data), "*.csv"), false).Where(r => r.HasTruth).ToList();
                 if (recordings.Count == 0) throw new UsageException("no labelled recordings (phase_left/phase_right) in --data");
-                var training = GaitTraining.WithAugmentation(recordings, parse.GetValue(augment));
+                var training = GaitTraining.WithAugmentation(recordings, copies);
                 var map = PhaseMapTraining.Learn(recordings);
                 Console.WriteLine($"{recordings.Count} labelled recordings, {training.Count - recordings.Count} augmented copies; phase map {map.Serialize()}");
                 bool onlyFolds = parse.GetValue(cvOnly);
-                if (onlyFolds && string.IsNullOrWhiteSpace(parse.GetValue(cv))) throw new UsageException("--cv-only needs --cv");
+                if (onlyFolds && schemeList.Count == 0) throw new UsageException("--cv-only needs --cv");
                 var gates = onlyFolds ? default : GaitTraining.TrainGates(training);
                 if (!onlyFolds)
                 {
@@ -69,7 +78,6 @@ namespace HeadGait.Cli
                     Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms, {1000 * cor.LeadPerLogBounce:+0.0;-0.0} ms per log unit of bounce from {cor.LeadReferenceBounce:F1} m/s^2");
                 }
 
-                string kinds = parse.GetValue(learned);
                 if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase))
                 {
                     if (!onlyFolds) WriteLearnedGateAndStance(outDir, gates.Learned, map);
@@ -85,7 +93,7 @@ namespace HeadGait.Cli
                 };
                 var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
                 var items = training.Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
-                var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir, parse.GetValue(lead));
+                var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), every, workDir, leadSeconds);
                 Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
 
@@ -98,10 +106,13 @@ namespace HeadGait.Cli
                     Verify(outDir);
                     WriteLearnedGateAndStance(outDir, gates.Learned, map);
                 }
-                foreach (var scheme in (parse.GetValue(cv) ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+                foreach (var scheme in schemeList)
                 {
-                    foreach (var fold in CrossValidation.Make(scheme, names))
+                    var folds = CrossValidation.Make(scheme, names);
+                    using var progress = new Progress($"train {scheme} CV folds", folds.Count);
+                    foreach (var fold in folds)
                     {
+                        progress.Step(fold.Name);
                         string foldDir = Path.Combine(parse.GetValue(cvModels) ?? DefaultCvModels(), scheme, Safe(fold.Name));
                         Directory.CreateDirectory(foldDir);
                         string exclude = Path.Combine(foldDir, "test-recordings.txt");
@@ -119,6 +130,13 @@ namespace HeadGait.Cli
                 return 0;
             });
             return command;
+        }
+
+        static bool IsLearnedList(string kinds)
+        {
+            if (string.Equals(kinds, "none", StringComparison.OrdinalIgnoreCase)) return true;
+            var parts = (kinds ?? "").Split(',', StringSplitOptions.TrimEntries);
+            return parts.Length > 0 && parts.All(p => p == "svm" || p == "blstm");
         }
 
         /// <summary>

@@ -12,7 +12,7 @@ namespace HeadGait.Tooling
     /// humanoid avatar as an instance of the package's "HeadGait Legs" prefab; a minimal camera rig to replace by the
     /// project's XR Origin. The document layout (file header, scene settings, GameObject/Transform/MeshFilter/
     /// MeshRenderer/MonoBehaviour/PrefabInstance records, built-in mesh references {fileID: 10202 cube, 10206 cylinder,
-    /// guid: 0000000000000000e000000000000000} and Default-Material {fileID: 10303, guid: 0000000000000000f000000000000000})
+    /// guid: 0000000000000000e000000000000000} and the package's materials, which render in the built-in pipeline and URP, PrimitiveMaterials)
     /// follows real scenes, e.g. Unity-Technologies/XR-Interaction-Toolkit-Examples VR/Assets/Scenes/UICanvas.unity.
     /// Fields left out take Unity's defaults when the scene loads.
     /// </summary>
@@ -56,17 +56,17 @@ namespace HeadGait.Tooling
 
             var world = w.Object("Path World", null, P(0, 0, 0));
             // Ground: everything but the pit (x -4..4, z 3..5), as thin boxes with their top at y = 0.
-            w.Box("Ground South", world, P(0, -0.05, (PitStart - 20) / 2), S(40, 0.1, PitStart + 20));
-            w.Box("Ground North", world, P(0, -0.05, PitEnd + 12.5), S(40, 0.1, 25));
-            w.Box("Ground West of Pit", world, P(-12, -0.05, 4), S(16, 0.1, PitEnd - PitStart));
-            w.Box("Ground East of Pit", world, P(12, -0.05, 4), S(16, 0.1, PitEnd - PitStart));
-            w.Box("Pit Floor", world, P(0, -PitDepth, 4), S(8, 0.1, PitEnd - PitStart));
-            w.Box("Pit Wall South", world, P(0, -PitDepth / 2, PitStart + 0.05), S(8, PitDepth, 0.1));
-            w.Box("Pit Wall North", world, P(0, -PitDepth / 2, PitEnd - 0.05), S(8, PitDepth, 0.1));
-            w.Box("Bridge Deck", world, P(0, -0.05, 4), S(1.6, 0.1, PitEnd - PitStart + 0.6));
-            w.Box("Bridge Rail West", world, P(-0.85, 0.5, 4), S(0.05, 1, PitEnd - PitStart + 0.6));
-            w.Box("Bridge Rail East", world, P(0.85, 0.5, 4), S(0.05, 1, PitEnd - PitStart + 0.6));
-            w.Box("Path", world, P(0, 0.005, PathHalfLength / 2), S(1.4, 0.01, PathHalfLength + 0.6));
+            w.Box("Ground South", world, P(0, -0.05, (PitStart - 20) / 2), S(40, 0.1, PitStart + 20), PrimitiveMaterials.Ground);
+            w.Box("Ground North", world, P(0, -0.05, PitEnd + 12.5), S(40, 0.1, 25), PrimitiveMaterials.Ground);
+            w.Box("Ground West of Pit", world, P(-12, -0.05, 4), S(16, 0.1, PitEnd - PitStart), PrimitiveMaterials.Ground);
+            w.Box("Ground East of Pit", world, P(12, -0.05, 4), S(16, 0.1, PitEnd - PitStart), PrimitiveMaterials.Ground);
+            w.Box("Pit Floor", world, P(0, -PitDepth, 4), S(8, 0.1, PitEnd - PitStart), PrimitiveMaterials.Pit);
+            w.Box("Pit Wall South", world, P(0, -PitDepth / 2, PitStart + 0.05), S(8, PitDepth, 0.1), PrimitiveMaterials.Pit);
+            w.Box("Pit Wall North", world, P(0, -PitDepth / 2, PitEnd - 0.05), S(8, PitDepth, 0.1), PrimitiveMaterials.Pit);
+            w.Box("Bridge Deck", world, P(0, -0.05, 4), S(1.6, 0.1, PitEnd - PitStart + 0.6), PrimitiveMaterials.Bridge);
+            w.Box("Bridge Rail West", world, P(-0.85, 0.5, 4), S(0.05, 1, PitEnd - PitStart + 0.6), PrimitiveMaterials.Bridge);
+            w.Box("Bridge Rail East", world, P(0.85, 0.5, 4), S(0.05, 1, PitEnd - PitStart + 0.6), PrimitiveMaterials.Bridge);
+            w.Box("Path", world, P(0, 0.005, PathHalfLength / 2), S(1.4, 0.01, PathHalfLength + 0.6), PrimitiveMaterials.Path);
             Marker(w, world, "Start", -0.4, 0);
             Marker(w, world, "Turn", 0, PathHalfLength);
             Marker(w, world, "End", 0.4, 0);
@@ -77,12 +77,12 @@ namespace HeadGait.Tooling
 
             var avatars = w.Object("Avatar Conditions", null, P(0, 0, 0));
             var block = w.Object("Block Avatar", avatars, P(0, 0, -0.5), active: false);
-            w.Box("Torso", block, P(0, 1.2, 0), S(0.4, 0.6, 0.2));
-            w.Box("Hips", block, P(0, 0.85, 0), S(0.36, 0.15, 0.2));
-            w.Box("Left Leg", block, P(-0.1, 0.4, 0), S(0.14, 0.8, 0.14));
-            w.Box("Right Leg", block, P(0.1, 0.4, 0), S(0.14, 0.8, 0.14));
-            w.Box("Left Foot", block, P(-0.1, 0.04, 0.06), S(0.12, 0.08, 0.26));
-            w.Box("Right Foot", block, P(0.1, 0.04, 0.06), S(0.12, 0.08, 0.26));
+            w.Box("Torso", block, P(0, 1.2, 0), S(0.4, 0.6, 0.2), PrimitiveMaterials.BlockAvatar);
+            w.Box("Hips", block, P(0, 0.85, 0), S(0.36, 0.15, 0.2), PrimitiveMaterials.BlockAvatar);
+            w.Box("Left Leg", block, P(-0.1, 0.4, 0), S(0.14, 0.8, 0.14), PrimitiveMaterials.BlockAvatar);
+            w.Box("Right Leg", block, P(0.1, 0.4, 0), S(0.14, 0.8, 0.14), PrimitiveMaterials.BlockAvatar);
+            w.Box("Left Foot", block, P(-0.1, 0.04, 0.06), S(0.12, 0.08, 0.26), PrimitiveMaterials.BlockAvatar);
+            w.Box("Right Foot", block, P(0.1, 0.04, 0.06), S(0.12, 0.08, 0.26), PrimitiveMaterials.BlockAvatar);
             // The blocks are not animated, but they walk with the participant like the humanoid does.
             w.Mono(block, w.Id(), scripts.FollowHead, FollowHeadFields(camera.Transform));
             var humanoid = w.Object("Humanoid Avatar", avatars, P(0, 0, -0.5), active: false);
@@ -115,8 +115,8 @@ namespace HeadGait.Tooling
         static void Marker(Writer w, Node parent, string name, double x, double z)
         {
             var m = w.Object(name, parent, P(x, 0, z));
-            w.Box(name + " Pad", m, P(0, 0.012, 0), S(0.6, 0.01, 0.6));
-            w.Box(name + " Post", m, P(0, 0.6, 0.45), S(0.08, 0.6, 0.08), Cylinder);
+            w.Box(name + " Pad", m, P(0, 0.012, 0), S(0.6, 0.01, 0.6), PrimitiveMaterials.Marker);
+            w.Box(name + " Post", m, P(0, 0.6, 0.45), S(0.08, 0.6, 0.08), PrimitiveMaterials.Marker, Cylinder);
         }
 
         static (double, double, double) P(double x, double y, double z) => (x, y, z);
@@ -148,10 +148,7 @@ namespace HeadGait.Tooling
             public void Header()
             {
                 head.Append("%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n");
-                head.Append("--- !u!29 &1\nOcclusionCullingSettings:\n  m_ObjectHideFlags: 0\n  serializedVersion: 2\n  m_OcclusionBakeSettings:\n    smallestOccluder: 5\n    smallestHole: 0.25\n    backfaceThreshold: 100\n  m_SceneGUID: 00000000000000000000000000000000\n  m_OcclusionCullingData: {fileID: 0}\n");
-                head.Append("--- !u!104 &2\nRenderSettings:\n  m_ObjectHideFlags: 0\n  serializedVersion: 9\n  m_Fog: 0\n  m_AmbientSkyColor: {r: 0.212, g: 0.227, b: 0.259, a: 1}\n  m_AmbientEquatorColor: {r: 0.114, g: 0.125, b: 0.133, a: 1}\n  m_AmbientGroundColor: {r: 0.047, g: 0.043, b: 0.035, a: 1}\n  m_AmbientIntensity: 1\n  m_AmbientMode: 0\n  m_SkyboxMaterial: {fileID: 10304, guid: 0000000000000000f000000000000000, type: 0}\n  m_Sun: {fileID: 0}\n");
-                head.Append("--- !u!157 &3\nLightmapSettings:\n  m_ObjectHideFlags: 0\n  serializedVersion: 12\n  m_GIWorkflowMode: 1\n  m_GISettings:\n    serializedVersion: 2\n    m_BounceScale: 1\n    m_IndirectOutputScale: 1\n    m_AlbedoBoost: 1\n    m_EnvironmentLightingMode: 0\n    m_EnableBakedLightmaps: 0\n    m_EnableRealtimeLightmaps: 0\n  m_LightingDataAsset: {fileID: 0}\n");
-                head.Append("--- !u!196 &4\nNavMeshSettings:\n  serializedVersion: 2\n  m_ObjectHideFlags: 0\n  m_NavMeshData: {fileID: 0}\n");
+                head.Append(UnityYaml.SceneSettings);
             }
 
             public Node Object(string name, Node parent, (double, double, double) position, (double, double, double)? euler = null, (double, double, double)? scale = null, string tag = "Untagged", bool active = true)
@@ -170,7 +167,7 @@ namespace HeadGait.Tooling
                 return n;
             }
 
-            public void Box(string name, Node parent, (double, double, double) position, (double, double, double) scale, int mesh = Cube)
+            public void Box(string name, Node parent, (double, double, double) position, (double, double, double) scale, PrimitiveMaterials.Material material, int mesh = Cube)
             {
                 var n = Object(name, parent, position, null, scale);
                 long filter = Id(), renderer = Id();
@@ -178,7 +175,7 @@ namespace HeadGait.Tooling
                 meta[n].components.Add(renderer);
                 extra[n].Add($"--- !u!33 &{filter}\nMeshFilter:\n{Base}  m_GameObject: {{fileID: {n.GameObject}}}\n  m_Mesh: {{fileID: {mesh}, guid: 0000000000000000e000000000000000, type: 0}}\n");
                 extra[n].Add($"--- !u!23 &{renderer}\nMeshRenderer:\n{Base}  m_GameObject: {{fileID: {n.GameObject}}}\n  m_Enabled: 1\n  m_CastShadows: 1\n  m_ReceiveShadows: 1\n" +
-                             "  m_Materials:\n  - {fileID: 10303, guid: 0000000000000000f000000000000000, type: 0}\n");
+                             "  m_Materials:\n  - " + material.Ref + "\n");
             }
 
             public void Light(Node n)

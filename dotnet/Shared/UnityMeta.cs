@@ -88,6 +88,7 @@ namespace HeadGait.Tooling
                 case ".html":
                 case ".yaml": return "TextScriptImporter";
                 case ".png": return "TextureImporter";
+                case ".shader": return "ShaderImporter";
                 case ".prefab": return "PrefabImporter";
                 case ".anim":
                 case ".controller":

@@ -2,21 +2,9 @@
 // uGUI package sources (Runtime/UI/Core/Graphic.cs: color; MaskableGraphic.cs; Image.cs; Text.cs: text, font,
 // fontSize, alignment; Selectable.cs: targetGraphic, interactable; Button.cs: onClick, Button.ButtonClickedEvent;
 // Runtime/EventSystem/EventSystem.cs: EventSystem.current; Runtime/EventSystem/UIBehaviour.cs;
-// Runtime/EventSystem/Raycasters/BaseRaycaster.cs; Runtime/EventSystem/InputModules/BaseInputModule.cs) and
-// UnityCsReference Runtime/Export/UnityEvent/UnityEvent.cs (UnityEvent.AddListener(UnityAction), UnityAction).
+// Runtime/EventSystem/Raycasters/BaseRaycaster.cs; Runtime/EventSystem/InputModules/BaseInputModule.cs). UnityEvent is
+// UnityEngine's own (UnityEngine.Events.cs).
 // Only what the sample calls; nothing is drawn or clicked here.
-namespace UnityEngine.Events
-{
-    public delegate void UnityAction();
-
-    public abstract class UnityEventBase { }
-
-    public class UnityEvent : UnityEventBase
-    {
-        public void AddListener(UnityAction call) { }
-    }
-}
-
 namespace UnityEngine.EventSystems
 {
     public abstract class UIBehaviour : MonoBehaviour { }

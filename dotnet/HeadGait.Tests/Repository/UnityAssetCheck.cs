@@ -87,8 +87,16 @@ namespace HeadGait.Tests
                         CheckReference(asset, d, key, reference, local, guids, Load, problems);
             }
 
+            // Unity writes every scene with its settings objects; a scene without them loads with defaults but is not one
+            // Unity wrote (and the Lighting window shows no settings to save).
+            foreach (var scene in assets.Where(a => a.EndsWith(".unity", StringComparison.Ordinal)))
+                foreach (var (classId, type) in new[] { (29, "OcclusionCullingSettings"), (104, "RenderSettings"), (157, "LightmapSettings"), (196, "NavMeshSettings") })
+                    if (!Load(scene).Any(d => d.ClassId == classId && d.Type == type)) problems.Add($"{scene}: no {type} (class {classId}) document");
             foreach (var asset in assets.Where(a => a.EndsWith(".unity", StringComparison.Ordinal) || a.EndsWith(".prefab", StringComparison.Ordinal)))
+            {
                 CheckHierarchy(asset, Load(asset), guids, Load, problems);
+                CheckRendererMaterials(asset, Load(asset), guids, Load, problems);
+            }
 
             var map = LoadPhaseMap(package, problems);
             foreach (var controller in assets.Where(a => a.EndsWith(".controller", StringComparison.Ordinal)))
@@ -224,6 +232,56 @@ namespace HeadGait.Tests
                         problems.Add($"{file}: stripped transform &{root.FileId} of prefab instance &{instance.FileId} is not the root Transform of its source prefab");
                 }
             }
+        }
+
+        /// <summary>
+        /// Every renderer (MeshRenderer 23, SkinnedMeshRenderer 137) and every prefab-instance override of m_Materials names
+        /// a material that renders in the built-in pipeline and in URP (Unity 6's VR template). Unity shows magenta for a
+        /// missing material and for a shader with no SubShader or Pass the active pipeline can draw: the built-in
+        /// Default-Material and Standard shader under URP, URP's own shaders under the built-in pipeline.
+        /// </summary>
+        static void CheckRendererMaterials(string file, List<UnityObject> docs, Dictionary<string, string> guids, Func<string, List<UnityObject>> load, List<string> problems)
+        {
+            void Check(string where, YamlNode reference)
+            {
+                var r = reference as YamlMappingNode;
+                string guid = r == null ? null : Get(r, "guid");
+                long id = RefId(reference);
+                if (id == 0) { problems.Add($"{where}: no material (magenta in every pipeline)"); return; }
+                if (guid == null || BuiltinGuids.Contains(guid))
+                {
+                    problems.Add($"{where}: built-in material {id}{(id == 10303 ? " (Default-Material, Standard shader)" : "")} renders magenta in URP");
+                    return;
+                }
+                if (!guids.TryGetValue(guid, out var material) || !material.EndsWith(".mat", StringComparison.Ordinal)) return; // CheckReference reports it
+                var m = load(material).FirstOrDefault(d => d.ClassId == 21);
+                var shaderRef = m?.Node("m_Shader") as YamlMappingNode;
+                string shaderGuid = shaderRef == null ? null : Get(shaderRef, "guid");
+                if (shaderGuid == null || BuiltinGuids.Contains(shaderGuid))
+                {
+                    problems.Add($"{where}: {Path.GetFileName(material)} uses built-in shader {RefId(shaderRef)}{(RefId(shaderRef) == 46 ? " (Standard)" : "")}, magenta in URP");
+                    return;
+                }
+                if (!guids.TryGetValue(shaderGuid, out var shader) || !shader.EndsWith(".shader", StringComparison.Ordinal))
+                {
+                    problems.Add($"{where}: {Path.GetFileName(material)}'s shader guid {shaderGuid} is no .shader in the package");
+                    return;
+                }
+                foreach (var pipeline in new[] { ShaderPasses.BuiltIn, ShaderPasses.Universal })
+                    if (!ShaderPasses.Draws(File.ReadAllText(shader), pipeline))
+                        problems.Add($"{where}: {Path.GetFileName(material)}'s shader {Path.GetFileName(shader)} has no SubShader and Pass the {pipeline} pipeline draws (magenta there)");
+            }
+            foreach (var d in docs.Where(d => (d.ClassId == 23 || d.ClassId == 137) && !d.Stripped))
+            {
+                var list = d.Node("m_Materials") as YamlSequenceNode;
+                if (list == null || list.Children.Count == 0) { problems.Add($"{file}: &{d.FileId} {d.Type} has no material (magenta in every pipeline)"); continue; }
+                for (int i = 0; i < list.Children.Count; i++) Check($"{file}: &{d.FileId} {d.Type}.m_Materials[{i}]", list.Children[i]);
+            }
+            foreach (var instance in docs.Where(d => d.ClassId == 1001))
+                if (instance.Node("m_Modification") is YamlMappingNode mod && mod.Children.TryGetValue(new YamlScalarNode("m_Modifications"), out var mods) && mods is YamlSequenceNode seq)
+                    foreach (YamlMappingNode change in seq.Children.OfType<YamlMappingNode>())
+                        if ((Get(change, "propertyPath") ?? "").StartsWith("m_Materials.Array.data[", StringComparison.Ordinal))
+                            Check($"{file}: prefab instance &{instance.FileId} {Get(change, "propertyPath")}", change.Children[new YamlScalarNode("objectReference")]);
         }
 
         /// <summary>Every serialized field of a MonoBehaviour (those not starting with m_) is declared in its script.</summary>
@@ -465,5 +523,72 @@ namespace HeadGait.Tests
         }
 
         static double Num(YamlMappingNode m, string key) => double.Parse(Get(m, key), CultureInfo.InvariantCulture);
+    }
+
+    /// <summary>
+    /// Which SubShaders and Passes of a ShaderLab source a pipeline draws. A SubShader tagged "RenderPipeline" is used only
+    /// under the pipeline with that tag value (URP: UniversalPipeline), one without the tag under any pipeline. A Pass
+    /// without "LightMode" is "Always" to the built-in pipeline and "SRPDefaultUnlit" to an SRP; URP's forward renderer
+    /// draws SRPDefaultUnlit, UniversalForward and UniversalForwardOnly, the built-in forward path Always, ForwardBase and
+    /// Vertex. Reads the text only (braces, Tags blocks); it does not compile the shader.
+    /// </summary>
+    public static class ShaderPasses
+    {
+        public const string BuiltIn = "built-in", Universal = "URP";
+
+        static readonly Dictionary<string, (string tag, string[] lightModes)> Pipelines = new Dictionary<string, (string, string[])>
+        {
+            [BuiltIn] = (null, new[] { "Always", "ForwardBase", "Vertex", "VertexLM" }),
+            [Universal] = ("UniversalPipeline", new[] { "SRPDefaultUnlit", "UniversalForward", "UniversalForwardOnly" }),
+        };
+
+        public static bool Draws(string shader, string pipeline)
+        {
+            var (pipelineTag, lightModes) = Pipelines[pipeline];
+            string text = Regex.Replace(shader, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
+            // Program bodies may hold braces of their own; they are not ShaderLab. A surface shader's program (#pragma
+            // surface) stands for the ForwardBase/ForwardAdd passes Unity generates from it, which only built-in draws.
+            text = Regex.Replace(text, @"\b(CGPROGRAM|HLSLPROGRAM|CGINCLUDE|HLSLINCLUDE)\b.*?\b(ENDCG|ENDHLSL)\b",
+                m => Regex.IsMatch(m.Value, @"#pragma\s+surface\b") ? "Pass { Tags { \"LightMode\" = \"ForwardBase\" } }" : "", RegexOptions.Singleline);
+            foreach (string sub in Blocks(text, "SubShader"))
+            {
+                string subTag = Tag(TagsBefore(sub, "Pass"), "RenderPipeline");
+                if (!string.IsNullOrEmpty(subTag) && subTag != pipelineTag) continue;
+                foreach (string pass in Blocks(sub, "Pass"))
+                {
+                    string lightMode = Tag(TagsBefore(pass, null), "LightMode") ?? (pipelineTag == null ? "Always" : "SRPDefaultUnlit");
+                    if (lightModes.Contains(lightMode)) return true;
+                }
+            }
+            return false;
+        }
+
+        /// <summary>The bodies of every `keyword { ... }` block at any depth.</summary>
+        static IEnumerable<string> Blocks(string text, string keyword)
+        {
+            foreach (Match m in Regex.Matches(text, @"\b" + keyword + @"\s*\{"))
+            {
+                int depth = 0, start = m.Index + m.Length;
+                for (int i = start - 1; i < text.Length; i++)
+                {
+                    if (text[i] == '{') depth++;
+                    else if (text[i] == '}' && --depth == 0) { yield return text.Substring(start, i - start); break; }
+                }
+            }
+        }
+
+        /// <summary>The first Tags block of a body, before the first nested <paramref name="stop"/> block.</summary>
+        static string TagsBefore(string body, string stop)
+        {
+            int end = stop == null ? body.Length : Regex.Match(body, @"\b" + stop + @"\s*\{") is var s && s.Success ? s.Index : body.Length;
+            var m = Regex.Match(body.Substring(0, end), @"\bTags\s*\{([^}]*)\}");
+            return m.Success ? m.Groups[1].Value : "";
+        }
+
+        static string Tag(string tags, string name)
+        {
+            var m = Regex.Match(tags, "\"" + name + "\"\\s*=\\s*\"([^\"]*)\"");
+            return m.Success ? m.Groups[1].Value : null;
+        }
     }
 }

@@ -26,7 +26,7 @@ namespace HeadGait.Tests
             try
             {
                 GaitAssetFiles.WriteAll(copy, CorrelationTemplate.Load(Path.Combine(copy, GaitAssetFiles.CorTemplate)).PhaseMap);
-                foreach (var relative in new[] { GaitAssetFiles.Controller, GaitAssetFiles.ClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidController, GaitAssetFiles.LegsPrefab, GaitAssetFiles.MannequinPrefab, GaitAssetFiles.SampleScene })
+                foreach (var relative in new[] { GaitAssetFiles.Controller, GaitAssetFiles.ClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidClipPath(LocomotionState.Walking), GaitAssetFiles.HumanoidController, GaitAssetFiles.LegsPrefab, GaitAssetFiles.MannequinPrefab, GaitAssetFiles.SampleScene, PrimitiveMaterials.ShaderPath, PrimitiveMaterials.Ground.Path })
                     Assert.That(File.ReadAllText(Path.Combine(copy, relative)), Is.EqualTo(File.ReadAllText(Path.Combine(Package, relative))), relative + " is out of date");
             }
             finally
@@ -78,7 +78,21 @@ namespace HeadGait.Tests
                 long avatar = UnityHierarchyYaml.Id(GaitAssetFiles.LegsRoot, GaitAssetFiles.AvatarName, "Transform");
                 Edit(study, t => t.Replace("m_CorrespondingSourceObject: {fileID: " + legsRoot + ",", "m_CorrespondingSourceObject: {fileID: " + avatar + ","));
 
+                // A mannequin part back on the built-in Default-Material, the Ground material on the built-in Standard shader,
+                // and the Pit material on a URP-only shader (all magenta in one pipeline or the other).
+                Edit(legs, t => ReplaceFirst(t, PrimitiveMaterials.Mannequin.Ref, "{fileID: 10303, guid: 0000000000000000f000000000000000, type: 0}"));
+                string shaderRef = UnityYaml.Ref(PrimitiveMaterials.ShaderFileId, PrimitiveMaterials.ShaderGuid, 3);
+                Edit(Path.Combine(copy, PrimitiveMaterials.Ground.Path), t => t.Replace(shaderRef, "{fileID: 46, guid: 0000000000000000f000000000000000, type: 0}"));
+                string urpOnly = Path.Combine(copy, PrimitiveMaterials.Folder, "UrpOnly.shader");
+                File.WriteAllText(urpOnly, UrpOnlyShader);
+                File.WriteAllText(urpOnly + ".meta", UnityMeta.Text(urpOnly, "fedcbafedcbafedcbafedcbafedcbafe"));
+                Edit(Path.Combine(copy, PrimitiveMaterials.Pit.Path), t => t.Replace(shaderRef, UnityYaml.Ref(PrimitiveMaterials.ShaderFileId, "fedcbafedcbafedcbafedcbafedcbafe", 3)));
+
                 var problems = string.Join("\n", UnityAssetCheck.Problems(copy));
+                Assert.That(problems, Does.Contain("HeadGait Legs.prefab: &").And.Contain("built-in material 10303 (Default-Material, Standard shader) renders magenta in URP"));
+                Assert.That(problems, Does.Contain("HeadGait Ground.mat uses built-in shader 46 (Standard), magenta in URP"));
+                Assert.That(problems, Does.Contain("HeadGait Pit.mat's shader UrpOnly.shader has no SubShader and Pass the built-in pipeline draws"));
+                Assert.That(problems, Does.Not.Contain("HeadGait Pit.mat's shader UrpOnly.shader has no SubShader and Pass the URP pipeline draws"));
                 Assert.That(problems, Does.Contain($"transform &{instanceRoot} (a prefab instance's root) is not listed in its father"));
                 Assert.That(problems, Does.Contain("field 'positionLag' is not declared in FollowHead.cs"));
                 Assert.That(problems, Does.Contain($"stripped transform &{instanceRoot} of prefab instance").And.Contain("is not the root Transform of its source prefab"));
@@ -99,6 +113,26 @@ namespace HeadGait.Tests
             {
                 Directory.Delete(copy, true);
             }
+        }
+
+        const string UrpOnlyShader = "Shader \"Test/URP Lit\"\n{\n    SubShader\n    {\n        Tags { \"RenderPipeline\" = \"UniversalPipeline\" }\n" +
+                                     "        Pass\n        {\n            Tags { \"LightMode\" = \"UniversalForward\" }\n            HLSLPROGRAM\n            float4 f() { return 0; }\n            ENDHLSL\n        }\n    }\n}\n";
+
+        [Test]
+        public void ThePrimitiveShaderIsDrawnByBothPipelinesAndOthersOnlyByTheirOwn()
+        {
+            Assert.That(ShaderPasses.Draws(PrimitiveMaterials.ShaderSource, ShaderPasses.BuiltIn), Is.True);
+            Assert.That(ShaderPasses.Draws(PrimitiveMaterials.ShaderSource, ShaderPasses.Universal), Is.True);
+            Assert.That(ShaderPasses.Draws(UrpOnlyShader, ShaderPasses.Universal), Is.True);
+            Assert.That(ShaderPasses.Draws(UrpOnlyShader, ShaderPasses.BuiltIn), Is.False);
+            // A surface shader (like Standard): built-in generates ForwardBase passes from it; URP draws none of them.
+            const string surface = "Shader \"Test/Surface\" { SubShader { Tags { \"RenderType\" = \"Opaque\" }\n CGPROGRAM\n #pragma surface surf Lambert\n struct Input { float2 uv; };\n void surf(Input i, inout SurfaceOutput o) { o.Albedo = 1; }\n ENDCG\n } }";
+            Assert.That(ShaderPasses.Draws(surface, ShaderPasses.BuiltIn), Is.True);
+            Assert.That(ShaderPasses.Draws(surface, ShaderPasses.Universal), Is.False);
+            // A pass only for the shadow map draws nothing visible in either.
+            const string shadowOnly = "Shader \"Test/Shadow\" { SubShader { Pass { Tags { \"LightMode\" = \"ShadowCaster\" } } } }";
+            Assert.That(ShaderPasses.Draws(shadowOnly, ShaderPasses.BuiltIn), Is.False);
+            Assert.That(ShaderPasses.Draws(shadowOnly, ShaderPasses.Universal), Is.False);
         }
 
         [Test]
@@ -129,7 +163,7 @@ namespace HeadGait.Tests
         static string CopyOfPackage()
         {
             string copy = Path.Combine(Path.GetTempPath(), "headgait-assets-" + Guid.NewGuid().ToString("N"));
-            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Animation/Humanoid", "Runtime/Prefabs", "Runtime/Components", "Runtime/Components/Study", "Samples~/Legs", "Samples~/Study", "Samples~/Recordings/eval" })
+            foreach (var folder in new[] { "Runtime/Animation", "Runtime/Animation/Humanoid", "Runtime/Materials", "Runtime/Prefabs", "Runtime/Components", "Runtime/Components/Study", "Samples~/Legs", "Samples~/Study", "Samples~/Recordings/eval" })
             {
                 foreach (var file in Directory.GetFiles(Path.Combine(Package, folder)))
                 {

@@ -69,6 +69,7 @@ namespace HeadGait.Tooling
                 written.Add(relative);
             }
 
+            written.AddRange(PrimitiveMaterials.WriteAll(package));
             var clips = new GaitClips(map);
             var clipGuids = new Dictionary<LocomotionState, string>();
             foreach (var clip in GaitClips.All)
@@ -120,30 +121,30 @@ namespace HeadGait.Tooling
             string P(string path) => root.Length == 0 ? path : root + "/" + path;
             double[] V(double x, double y, double z) => new[] { x, y, z };
             h.Add(P(Mannequin.Hips), "Hips", V(0, Mannequin.StandingHipHeight, 0));
-            h.AddMesh(P(Mannequin.Hips), "Pelvis Mesh", UnityHierarchyYaml.Cube, V(0, 0, 0), V(0.3, 0.14, 0.18));
+            h.AddMesh(P(Mannequin.Hips), "Pelvis Mesh", UnityHierarchyYaml.Cube, V(0, 0, 0), V(0.3, 0.14, 0.18), PrimitiveMaterials.Mannequin);
             h.Add(P(Mannequin.Spine), "Spine", V(0, 0.08, 0));
-            h.AddMesh(P(Mannequin.Spine), "Mesh", UnityHierarchyYaml.Cube, V(0, 0.24, 0), V(0.34, 0.48, 0.2));
+            h.AddMesh(P(Mannequin.Spine), "Mesh", UnityHierarchyYaml.Cube, V(0, 0.24, 0), V(0.34, 0.48, 0.2), PrimitiveMaterials.Mannequin);
             h.Add(P(Mannequin.Head), "Head", V(0, 0.56, 0));
-            h.AddMesh(P(Mannequin.Head), "Mesh", UnityHierarchyYaml.Sphere, V(0, 0.1, 0), V(0.22, 0.22, 0.22));
+            h.AddMesh(P(Mannequin.Head), "Mesh", UnityHierarchyYaml.Sphere, V(0, 0.1, 0), V(0.22, 0.22, 0.22), PrimitiveMaterials.Mannequin);
             foreach (Foot foot in new[] { Foot.Left, Foot.Right })
             {
                 double side = foot == Foot.Left ? -1 : 1;
                 string s = Mannequin.Side(foot);
                 h.Add(P(Mannequin.UpperLeg(foot)), s + "UpperLeg", V(side * Mannequin.HipWidth / 2, 0, 0));
-                h.AddMesh(P(Mannequin.UpperLeg(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -Mannequin.Thigh / 2, 0), V(0.12, Mannequin.Thigh / 2, 0.12));
+                h.AddMesh(P(Mannequin.UpperLeg(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -Mannequin.Thigh / 2, 0), V(0.12, Mannequin.Thigh / 2, 0.12), PrimitiveMaterials.Mannequin);
                 h.Add(P(Mannequin.LowerLeg(foot)), s + "LowerLeg", V(0, -Mannequin.Thigh, 0));
-                h.AddMesh(P(Mannequin.LowerLeg(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -Mannequin.Shank / 2, 0), V(0.1, Mannequin.Shank / 2, 0.1));
+                h.AddMesh(P(Mannequin.LowerLeg(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -Mannequin.Shank / 2, 0), V(0.1, Mannequin.Shank / 2, 0.1), PrimitiveMaterials.Mannequin);
                 double ball = Mannequin.BallFromHeel - Mannequin.HeelBehindAnkle;
                 h.Add(P(Mannequin.FootPath(foot)), s + "Foot", V(0, -Mannequin.Shank, 0));
                 h.AddMesh(P(Mannequin.FootPath(foot)), "Mesh", UnityHierarchyYaml.Cube,
-                    V(0, -Mannequin.AnkleHeight / 2, (ball - Mannequin.HeelBehindAnkle) / 2), V(0.09, Mannequin.AnkleHeight, Mannequin.BallFromHeel));
+                    V(0, -Mannequin.AnkleHeight / 2, (ball - Mannequin.HeelBehindAnkle) / 2), V(0.09, Mannequin.AnkleHeight, Mannequin.BallFromHeel), PrimitiveMaterials.Mannequin);
                 double toes = Mannequin.FootLength - Mannequin.BallFromHeel;
                 h.Add(P(Mannequin.Toes(foot)), s + "Toes", V(0, -Mannequin.AnkleHeight, ball));
-                h.AddMesh(P(Mannequin.Toes(foot)), "Mesh", UnityHierarchyYaml.Cube, V(0, 0.015, toes / 2), V(0.09, 0.03, toes));
+                h.AddMesh(P(Mannequin.Toes(foot)), "Mesh", UnityHierarchyYaml.Cube, V(0, 0.015, toes / 2), V(0.09, 0.03, toes), PrimitiveMaterials.Mannequin);
                 h.Add(P(Mannequin.UpperArm(foot)), s + "UpperArm", V(side * 0.21, 0.46, 0));
-                h.AddMesh(P(Mannequin.UpperArm(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -0.15, 0), V(0.08, 0.15, 0.08));
+                h.AddMesh(P(Mannequin.UpperArm(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -0.15, 0), V(0.08, 0.15, 0.08), PrimitiveMaterials.Mannequin);
                 h.Add(P(Mannequin.LowerArm(foot)), s + "LowerArm", V(0, -0.3, 0), V(-15, 0, 0));
-                h.AddMesh(P(Mannequin.LowerArm(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -0.13, 0), V(0.07, 0.13, 0.07));
+                h.AddMesh(P(Mannequin.LowerArm(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -0.13, 0), V(0.07, 0.13, 0.07), PrimitiveMaterials.Mannequin);
             }
         }
 

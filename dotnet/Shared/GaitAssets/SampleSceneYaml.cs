@@ -7,8 +7,7 @@ namespace HeadGait.Tooling
     /// the drop-in prefab (its HeadImuSource switched to External, its FollowHead off) and a RecordingPlayer replaying a sample recording into
     /// the prefab's GaitLegAnimator, so the legs can be watched without a headset. A prefab instance is a PrefabInstance
     /// (1001) listing its modifications, plus a `stripped` document for each of its objects the scene refers to.
-    /// The scene's settings documents (OcclusionCullingSettings 29, RenderSettings 104, LightmapSettings 157,
-    /// NavMeshSettings 196) are left to Unity's defaults.
+    /// It opens with the scene-settings documents Unity-written scenes have (<see cref="UnityYaml.SceneSettings"/>).
     /// </summary>
     public static class SampleSceneYaml
     {
@@ -41,13 +40,14 @@ namespace HeadGait.Tooling
                 "  serializedVersion: 10\n  m_Type: 1\n  m_Shape: 0\n  m_Color: {r: 1, g: 0.96, b: 0.84, a: 1}\n  m_Intensity: 1\n  m_Range: 10\n" +
                 "  m_SpotAngle: 30\n  m_Shadows:\n    m_Type: 2\n    m_Resolution: -1\n    m_Strength: 1\n    m_Bias: 0.05\n    m_NormalBias: 0.4\n" +
                 "    m_NearPlane: 0.2\n", true);
-            h.AddMesh("", "Floor", UnityHierarchyYaml.Plane, V(0, 0, 0), V(1, 1, 1));
+            h.AddMesh("", "Floor", UnityHierarchyYaml.Plane, V(0, 0, 0), V(1, 1, 1), PrimitiveMaterials.Ground);
             h.Add("Recording Player", "Recording Player");
             h.AddScript("Recording Player", "RecordingPlayer", GaitAssetFiles.GuidOf(package, GaitAssetFiles.RecordingPlayerScript),
                 "  target: " + UnityYaml.Ref(StrippedLegAnimatorId) + "\n  recording: " +
                 UnityYaml.Ref(GaitAssetFiles.TextAssetId, GaitAssetFiles.GuidOf(package, GaitAssetFiles.SampleRecording), 3) + "\n  loop: 1\n  speed: 1\n");
 
             var sb = new StringBuilder(UnityYaml.Header);
+            sb.Append(UnityYaml.SceneSettings);
             sb.Append(h.Write(withHeader: false));
             sb.Append(UnityYaml.Document(1001, PrefabInstanceId, "PrefabInstance"));
             sb.Append("  m_ObjectHideFlags: 0\n  serializedVersion: 2\n  m_Modification:\n    serializedVersion: 3\n    m_TransformParent: {fileID: 0}\n");

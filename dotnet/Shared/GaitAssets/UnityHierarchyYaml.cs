@@ -73,8 +73,8 @@ namespace HeadGait.Tooling
             => AddComponent(path, 114, "MonoBehaviour", kind,
                 "  m_EditorHideFlags: 0\n  m_Script: " + UnityYaml.Ref(11500000, scriptGuid, 3) + "\n  m_Name: \n  m_EditorClassIdentifier: \n" + fields, true);
 
-        /// <summary>A child GameObject showing a built-in mesh with the default material.</summary>
-        public void AddMesh(string parentPath, string name, int mesh, double[] position, double[] scale)
+        /// <summary>A child GameObject showing a built-in mesh with one of the package's materials (they render in any pipeline).</summary>
+        public void AddMesh(string parentPath, string name, int mesh, double[] position, double[] scale, PrimitiveMaterials.Material material)
         {
             string path = parentPath.Length == 0 ? name : parentPath + "/" + name;
             Add(path, name, position, null, scale);
@@ -82,7 +82,7 @@ namespace HeadGait.Tooling
             AddComponent(path, 23, "MeshRenderer", "MeshRenderer",
                 "  m_CastShadows: 1\n  m_ReceiveShadows: 1\n  m_DynamicOccludee: 1\n  m_MotionVectors: 1\n  m_LightProbeUsage: 1\n" +
                 "  m_ReflectionProbeUsage: 1\n  m_RenderingLayerMask: 1\n  m_RendererPriority: 0\n  m_Materials:\n" +
-                "  - " + UnityYaml.Ref(10303, UnityYaml.BuiltinMaterialGuid, 0) + "\n" +
+                "  - " + material.Ref + "\n" +
                 "  m_StaticBatchInfo: {firstSubMesh: 0, subMeshCount: 0}\n  m_StaticBatchRoot: {fileID: 0}\n  m_ProbeAnchor: {fileID: 0}\n" +
                 "  m_LightProbeVolumeOverride: {fileID: 0}\n  m_SortingLayerID: 0\n  m_SortingLayer: 0\n  m_SortingOrder: 0\n", true);
         }

@@ -17,8 +17,28 @@ namespace HeadGait.Tooling
 
         /// <summary>Unity's built-in resources: primitive meshes (Cube 10202, Cylinder 10206, Sphere 10207, Capsule 10208).</summary>
         public const string BuiltinExtraGuid = "0000000000000000e000000000000000";
-        /// <summary>Unity's built-in extra resources: Default-Material (10303).</summary>
+        /// <summary>Unity's built-in extra resources: Default-Material (10303, magenta in URP: not used), Default-Skybox (10304).</summary>
         public const string BuiltinMaterialGuid = "0000000000000000f000000000000000";
+
+        /// <summary>
+        /// The four scene-settings documents every Unity-written scene opens with (OcclusionCullingSettings 29, RenderSettings
+        /// 104, LightmapSettings 157, NavMeshSettings 196), at the serialized versions Unity 6 writes (Manual: "Example of a
+        /// YAML scene file"); fields left out take Unity's defaults. Ambient from the default skybox, which is a built-in
+        /// Skybox/Procedural material that URP draws too; no baked lighting.
+        /// </summary>
+        public const string SceneSettings =
+            "--- !u!29 &1\nOcclusionCullingSettings:\n  m_ObjectHideFlags: 0\n  serializedVersion: 2\n  m_OcclusionBakeSettings:\n" +
+            "    smallestOccluder: 5\n    smallestHole: 0.25\n    backfaceThreshold: 100\n  m_SceneGUID: 00000000000000000000000000000000\n" +
+            "  m_OcclusionCullingData: {fileID: 0}\n" +
+            "--- !u!104 &2\nRenderSettings:\n  m_ObjectHideFlags: 0\n  serializedVersion: 10\n  m_Fog: 0\n" +
+            "  m_AmbientSkyColor: {r: 0.212, g: 0.227, b: 0.259, a: 1}\n  m_AmbientEquatorColor: {r: 0.114, g: 0.125, b: 0.133, a: 1}\n" +
+            "  m_AmbientGroundColor: {r: 0.047, g: 0.043, b: 0.035, a: 1}\n  m_AmbientIntensity: 1\n  m_AmbientMode: 0\n" +
+            "  m_SkyboxMaterial: {fileID: 10304, guid: " + BuiltinMaterialGuid + ", type: 0}\n  m_Sun: {fileID: 0}\n" +
+            "--- !u!157 &3\nLightmapSettings:\n  m_ObjectHideFlags: 0\n  serializedVersion: 13\n  m_BakeOnSceneLoad: 0\n  m_GISettings:\n" +
+            "    serializedVersion: 2\n    m_BounceScale: 1\n    m_IndirectOutputScale: 1\n    m_AlbedoBoost: 1\n    m_EnvironmentLightingMode: 0\n" +
+            "    m_EnableBakedLightmaps: 0\n    m_EnableRealtimeLightmaps: 0\n  m_LightingDataAsset: {fileID: 0}\n  m_LightingSettings: {fileID: 0}\n" +
+            "--- !u!196 &4\nNavMeshSettings:\n  serializedVersion: 2\n  m_ObjectHideFlags: 0\n  m_BuildSettings:\n    serializedVersion: 3\n" +
+            "    agentTypeID: 0\n    agentRadius: 0.5\n    agentHeight: 2\n    agentSlope: 45\n    agentClimb: 0.4\n  m_NavMeshData: {fileID: 0}\n";
 
         public static string Document(int classId, long fileId, string type, bool stripped = false)
             => $"--- !u!{classId} &{fileId}{(stripped ? " stripped" : "")}\n{type}:\n";

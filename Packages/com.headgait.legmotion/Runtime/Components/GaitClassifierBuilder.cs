@@ -34,13 +34,13 @@ namespace HeadGait.Unity
             bool learned = kind == GaitClassifierKind.Svm || kind == GaitClassifierKind.Blstm;
             bool usesCor = learned || kind == GaitClassifierKind.Correlation;
             if (kind == GaitClassifierKind.Svm)
-                models.Svm = Read(svm, "SVM model", a => Checked(ModelFile.Parse(a.Bytes, a.Name), f => new SvmClassifier(f)), errors);
+                models.Svm = Read(svm, "SVM model", a => GaitModels.Checked(ModelFile.Parse(a.Bytes, a.Name), f => new SvmClassifier(f), a.Name), errors);
             if (kind == GaitClassifierKind.Blstm)
-                models.Blstm = Read(blstm, "BLSTM model", a => Checked(ModelFile.Parse(a.Bytes, a.Name), f => new BlstmClassifier(f)), errors);
+                models.Blstm = Read(blstm, "BLSTM model", a => GaitModels.Checked(ModelFile.Parse(a.Bytes, a.Name), f => new BlstmClassifier(f), a.Name), errors);
             if (usesCor)
-                models.Correlation = Read(correlation, "COR template", a => CorrelationTemplate.Parse(a.Text, a.Name), learned ? null : errors);
+                models.Correlation = Read(correlation, "COR template", a => GaitModels.Checked(CorrelationTemplate.Parse(a.Text, a.Name), t => new CorrelationClassifier(t), a.Name), learned ? null : errors);
             // THR runs on its defaults without a settings file: a missing one is no problem, a broken one is.
-            models.Threshold = threshold == null ? null : Read(threshold, "THR settings", a => ThresholdSettings.Parse(a.Text, a.Name), errors);
+            models.Threshold = threshold == null ? null : Read(threshold, "THR settings", a => GaitModels.Checked(ThresholdSettings.Parse(a.Text, a.Name), t => new ThresholdClassifier(t), a.Name), errors);
 
             var classifier = models.Create(Name(kind), out warning);
             if (kind == GaitClassifierKind.Threshold && threshold == null) warning = null;
@@ -60,11 +60,6 @@ namespace HeadGait.Unity
             }
         }
 
-        static ModelFile Checked(ModelFile file, Func<ModelFile, LearnedClassifier> build)
-        {
-            build(file); // checks every tensor's shape against the model's features and classes
-            return file;
-        }
 
         /// <summary>The parsed asset, or null with one line in <paramref name="errors"/> (when given) naming it and what is wrong.</summary>
         static T Read<T>(ModelAsset asset, string what, Func<ModelAsset, T> parse, List<string> errors) where T : class

@@ -152,7 +152,9 @@ namespace HeadGait.Unity
         void Update()
         {
             if (runner == null) return;
-            runner.Step(scheduler);
+            runner.Step(scheduler, Time.unscaledTimeAsDouble);
+            string problem = runner.TakeWarning();
+            if (problem != null) Debug.LogWarning($"HeadGait: {problem}.", this);
             var f = runner.Latest;
             if (f.State != lastState)
             {

@@ -91,6 +91,13 @@ namespace HeadGait.Unity
         void Update() => legacy?.Poll(Time.unscaledTimeAsDouble);
 #endif
 
+        void LateUpdate()
+        {
+            // A pose stream too slow for the pose path gives no samples at all: say so once rather than stand silently.
+            string problem = router != null && router.WantsHead ? router.Head.TakeWarning() : null;
+            if (problem != null) Debug.LogWarning($"HeadGait: {problem}.", this);
+        }
+
         void Deliver(HeadSample sample)
         {
             LastSample = sample.SpecificForce;

@@ -130,7 +130,7 @@ namespace HeadGait.Tests
             var r = new DeterministicRandom((ulong)(1000 + seed));
             var s = new List<ImuSample>();
             double t = seed % 4 == 0 ? 1e9 * r.NextDouble() : seed % 4 == 1 ? -50 : 3.5;
-            int kind = seed % 8;
+            int kind = seed % 10;
             for (int i = 0; i < 800; i++)
             {
                 double u = r.NextDouble();
@@ -143,10 +143,13 @@ namespace HeadGait.Tests
                     case 4: t += 0.0002; s.Add(new ImuSample(t, 5 * Math.Sin(i), 0, 9.8 + 5 * Math.Cos(i))); break;
                     case 5: t += 1.0; s.Add(new ImuSample(t, 0, 0, 9.8 + 3 * u)); break;
                     case 6: t += 0.01; s.Add(new ImuSample(t, 1e6 * (u - 0.5), double.PositiveInfinity, 9.8)); break;
+                    case 8: s.Add(new ImuSample(1.7e15 + 0.01 * i, 3 * Math.Sin(0.1 * i), 0, 9.8 + 3 * u)); break; // epoch microseconds read as seconds
+                    case 9: t += 0.25; s.Add(new ImuSample(t, 3 * Math.Sin(i), 0, 9.8 + 3 * u)); break;            // 4 Hz, below the lowest rate
                     default: t += i % 2 == 0 ? 0.01 : -0.005; s.Add(new ImuSample(u < 0.02 ? double.NaN : t, 200 * (u - 0.5), 0, 9.8)); break;
                 }
             }
-            double resume = Math.Max(t, s.Count > 0 ? s[s.Count - 1].Time : 0) + 0.01;
+            // After epoch stamps the app is taken to stamp seconds since start-up: a clock the pipeline can resolve.
+            double resume = kind == 8 ? 100 : Math.Max(t, s.Count > 0 ? s[s.Count - 1].Time : 0) + 0.01;
             var walk = WalkingStreamGenerator.Generate("walk", GaitSubject.Random(50 + (ulong)seed), new StreamScript().Walk(12, Foot.Left), 7 + (ulong)seed);
             walkIndex = s.Count;
             double t0 = walk.Samples[0].Imu.Time;

@@ -189,8 +189,8 @@ ROOT Hips
                     if (accel.Samples[j].Left == r.Left && accel.Samples[j].Right == r.Right) agree++;
                 }
                 // Sideways (left, +y) and vertical acceleration follow the sway and the bob, with the same signs.
-                Assert.That(MathNet.Numerics.Statistics.Correlation.Pearson(a[1], b[1]), Is.GreaterThan(0.98), "lateral");
-                Assert.That(MathNet.Numerics.Statistics.Correlation.Pearson(a[2], b[2]), Is.GreaterThan(0.98), "vertical");
+                Assert.That(Pearson(a[1], b[1]), Is.GreaterThan(0.98), "lateral");
+                Assert.That(Pearson(a[2], b[2]), Is.GreaterThan(0.98), "vertical");
                 double forward = 0;
                 foreach (var x in a[0]) forward = Math.Max(forward, Math.Abs(x));
                 Assert.That(forward, Is.LessThan(0.1), "no forward motion in the clip");
@@ -275,23 +275,37 @@ ROOT Hips
         static double Correlation(List<RecordedSample> a, List<RecordedSample> b, int n, int axis)
         {
             double Get(RecordedSample s) => axis == 0 ? s.Imu.X : axis == 1 ? s.Imu.Y : s.Imu.Z;
-            double ma = 0, mb = 0;
+            var x = new double[n];
+            var y = new double[n];
             for (int i = 0; i < n; i++)
             {
-                ma += Get(a[i]);
-                mb += Get(b[i]);
+                x[i] = Get(a[i]);
+                y[i] = Get(b[i]);
             }
-            ma /= n;
-            mb /= n;
-            double sab = 0, saa = 0, sbb = 0;
-            for (int i = 0; i < n; i++)
+            return Pearson(x, y);
+        }
+
+        /// <summary>Pearson's r. Written here because Unity compiles these tests with NUnit as their only library (the
+        /// asmdef overrides references), so no statistics package is at hand there.</summary>
+        static double Pearson(IReadOnlyList<double> x, IReadOnlyList<double> y)
+        {
+            double mx = 0, my = 0;
+            for (int i = 0; i < x.Count; i++)
             {
-                double da = Get(a[i]) - ma, db = Get(b[i]) - mb;
-                sab += da * db;
-                saa += da * da;
-                sbb += db * db;
+                mx += x[i];
+                my += y[i];
             }
-            return sab / Math.Sqrt(saa * sbb);
+            mx /= x.Count;
+            my /= y.Count;
+            double sxy = 0, sxx = 0, syy = 0;
+            for (int i = 0; i < x.Count; i++)
+            {
+                double dx = x[i] - mx, dy = y[i] - my;
+                sxy += dx * dy;
+                sxx += dx * dx;
+                syy += dy * dy;
+            }
+            return sxy / Math.Sqrt(sxx * syy);
         }
     }
 }

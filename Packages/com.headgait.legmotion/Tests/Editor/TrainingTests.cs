@@ -92,12 +92,12 @@ namespace HeadGait.Tests
             // Written before the autocorrelation input: six features and the bias.
             var old = WalkingGate.Parse("1.5,2,-0.5,0.25,-3,7,-12");
             Assert.That(old.Weights, Is.EqualTo(LinearWeights(new[] { 1.5, 2, -0.5, 0.25, -3, 7, 0 }, -12)));
-            var kv = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-12\n", "# test", "thr.txt");
+            var kv = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-12\nend\n", "# test", "thr.txt");
             Assert.That(kv.Gate("walking_gate").Weights, Is.EqualTo(old.Weights));
             // Written before the pairwise products: seven features and the bias.
-            var linear = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-0.8,-12\n", "# test", "thr.txt").Gate("walking_gate");
+            var linear = KeyValueText.Parse("# test\nwalking_gate=1.5,2,-0.5,0.25,-3,7,-0.8,-12\nend\n", "# test", "thr.txt").Gate("walking_gate");
             Assert.That(linear.Weights, Is.EqualTo(LinearWeights(new[] { 1.5, 2, -0.5, 0.25, -3, 7, -0.8 }, -12)));
-            Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=1,2,3\n", "# test", "thr.txt").Gate("walking_gate"),
+            Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=1,2,3\nend\n", "# test", "thr.txt").Gate("walking_gate"),
                 Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt").And.Message.Contains($"expected {WalkingGate.WeightCount}"));
         }
 
@@ -113,11 +113,11 @@ namespace HeadGait.Tests
             Assert.That(back.LevelTolerance, Is.EqualTo(15));
             Assert.That(back.Weights, Is.EqualTo(w));
             Assert.That(WalkingGate.Parse(new WalkingGate(w).Serialize()).LevelTolerance, Is.Null);
-            var kv = KeyValueText.Parse("# test\nwalking_gate=" + gate.Serialize() + "\n", "# test", "thr.txt");
+            var kv = KeyValueText.Parse("# test\nwalking_gate=" + gate.Serialize() + "\nend\n", "# test", "thr.txt");
             Assert.That(kv.Gate("walking_gate").LevelTolerance, Is.EqualTo(15));
             Assert.That(() => WalkingGate.Parse("level:x;" + new WalkingGate(w).Serialize()), Throws.TypeOf<FormatException>().With.Message.Contains("levelling"));
             Assert.That(() => WalkingGate.Parse("level:15"), Throws.TypeOf<FormatException>().With.Message.Contains("levelling"));
-            Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=level:200;1,2\n", "# test", "thr.txt").Gate("walking_gate"),
+            Assert.That(() => KeyValueText.Parse("# test\nwalking_gate=level:200;1,2\nend\n", "# test", "thr.txt").Gate("walking_gate"),
                 Throws.TypeOf<FormatException>().With.Message.Contains("thr.txt"));
         }
 

@@ -28,6 +28,18 @@ namespace HeadGait.Tests
         static IGaitClassifier Build(GaitClassifierKind kind, ModelAsset svm, ModelAsset blstm, ModelAsset cor, out string error, out string warning)
             => GaitClassifierBuilder.Build(kind, Text(GaitModels.ThresholdFile), cor, svm, blstm, out error, out warning);
 
+        [Test]
+        public void AModelWithAbsurdValuesIsRefusedAndFallsBack()
+        {
+            // The same checks as GaitModels.Load (ModelValidationTests): here on the bytes Unity hands over.
+            var m = ModelFile.Parse(File.ReadAllBytes(Path.Combine(Models, GaitModels.SvmFile)), "svm");
+            m.Values["gamma"] = "1e300";
+            var c = Build(GaitClassifierKind.Svm, new ModelAsset("svm", null, m.ToBytes()), null, Text(GaitModels.CorrelationFile), out string error, out string warning);
+            Assert.That(c, Is.InstanceOf<CorrelationClassifier>());
+            Assert.That(error, Does.Contain("gamma"));
+            Assert.That(warning, Does.Contain("using COR instead"));
+        }
+
         [TestCase(GaitClassifierKind.Threshold, typeof(ThresholdClassifier))]
         [TestCase(GaitClassifierKind.Correlation, typeof(CorrelationClassifier))]
         [TestCase(GaitClassifierKind.Svm, typeof(SvmClassifier))]

@@ -360,5 +360,51 @@ namespace HeadGait.Tests
             using (var scheduler = new GaitJobScheduler(jobRunner))
                 Assert.That(AllocatedPerFrameLoop(jobRunner, scheduler, samples, 90), Is.EqualTo(0), "bytes allocated by frames through the job");
         }
-    }
+    
+        [Test]
+        public void ASilentSensorLeavesTheAvatarStandingAfterTheGapNotMidStride()
+        {
+            // Regression: frames without samples showed the last walking frame until three new samples came (a sensor that
+            // stopped for seconds left the legs frozen mid-stride).
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
+            var scheduler = new InlineBatchScheduler(runner);
+            var samples = Stream(irregular: false, seconds: 9);
+            double frame = 1 / 72.0, now = 0;
+            int next = 0;
+            // Walk until the avatar walks: frames at 72 Hz, each handing over the samples of its time.
+            while (next < samples.Count && (runner.Latest.State != LocomotionState.Walking || now < 4))
+            {
+                now += frame;
+                while (next < samples.Count && samples[next].Time <= now) runner.Push(samples[next++]);
+                runner.Step(scheduler, now);
+            }
+            Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Walking), "walking when the sensor falls silent");
+            double silentFrom = now;
+            double maxGap = runner.Pipeline.Preprocessor.Settings.MaxGap;
+            while (now < silentFrom + 2)
+            {
+                now += frame;
+                runner.Step(scheduler, now);
+                if (now - silentFrom <= maxGap - frame) Assert.That(runner.Latest.State, Is.Not.EqualTo(LocomotionState.Standing), "a frame or two without samples is no gap");
+                if (now - silentFrom > maxGap + 2 * frame) Assert.That(runner.Latest.State, Is.EqualTo(LocomotionState.Standing), $"standing {now - silentFrom:F3} s into the silence");
+            }
+            // The sensor comes back on its own clock, 2 s on: the pipeline starts afresh and walks again.
+            double offset = now - samples[next].Time;
+            double back = now;
+            bool walkingAgain = false;
+            while (next < samples.Count && !walkingAgain)
+            {
+                now += frame;
+                while (next < samples.Count && samples[next].Time + offset <= now)
+                {
+                    var s = samples[next++];
+                    runner.Push(new ImuSample(s.Time + offset, s.X, s.Y, s.Z));
+                }
+                runner.Step(scheduler, now);
+                walkingAgain = runner.Latest.State != LocomotionState.Standing;
+            }
+            Assert.That(walkingAgain, Is.True);
+            Assert.That(now - back, Is.LessThan(1.5), "walking shown again soon after the sensor returns");
+        }
+}
 }

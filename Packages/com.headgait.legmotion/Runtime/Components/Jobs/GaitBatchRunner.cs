@@ -50,6 +50,8 @@ namespace HeadGait.Unity
         int batchGeneration;
         bool resetPipeline;       // Reset came while a batch ran: reset the pipeline before the next one
         double sourceLag;
+        double lastSamples = double.NaN; // the frame time samples last came, for the silence rule
+        string warning;
 
         // Written by the batch, read on the main thread only after it completed.
         AnimatorFrame batchLatest;
@@ -172,10 +174,12 @@ namespace HeadGait.Unity
 
         /// <summary>
         /// The frame's work (main thread): completes last frame's batch and publishes its latest frame (or a Start/Finish frame
-        /// it passed through, held for this one frame), then schedules the samples handed over
-        /// since, if any. Never waits on anything scheduled in this call.
+        /// it passed through, held for this one frame), then schedules the samples handed over since, if any. Never waits on
+        /// anything scheduled in this call. <paramref name="now"/> is the frame's real time (s; Unity's unscaled time): when no
+        /// sample has come for longer than the preprocessor's MaxGap (0.1 s, the hole that restarts the window) the avatar
+        /// stands, rather than hold its last walking frame until new samples arrive. NaN leaves that rule out.
         /// </summary>
-        public void Step(IGaitBatchScheduler scheduler)
+        public void Step(IGaitBatchScheduler scheduler, double now = double.NaN)
         {
             if (scheduler == null) throw new ArgumentNullException(nameof(scheduler));
             stepping = true;
@@ -188,7 +192,18 @@ namespace HeadGait.Unity
                 stepping = false;
             }
             ShowNext();
-            if (pendingCount == 0) return;
+            if (pendingCount == 0)
+            {
+                if (!inFlight && heldCount == 0 && now - lastSamples > pipeline.Preprocessor.Settings.MaxGap
+                    && Latest.State != LocomotionState.Standing)
+                {
+                    pipeline.Settle(pipeline.LatestPrediction.Time);
+                    Latest = newest = pipeline.Latest;
+                    LatestPrediction = newestPrediction = pipeline.LatestPrediction;
+                }
+                return;
+            }
+            lastSamples = now;
             if (resetPipeline)
             {
                 pipeline.Reset();
@@ -207,12 +222,22 @@ namespace HeadGait.Unity
             scheduler.Schedule();
         }
 
+        /// <summary>A clock or rate problem the pipeline met (each kind once), for the main thread to log; null when none is new.</summary>
+        public string TakeWarning()
+        {
+            string w = warning;
+            warning = null;
+            return w;
+        }
+
         /// <summary>Completes the batch in flight, if any, and publishes it (main thread; on disable, before a rebuild).</summary>
         public void Complete(IGaitBatchScheduler scheduler)
         {
             if (!inFlight) return;
             scheduler.Complete();
             inFlight = false;
+            string w = pipeline.Preprocessor.TakeWarning();
+            if (w != null) warning = warning == null ? w : warning + "; " + w;
             if (batchGeneration != generation) return; // reset while it ran: its frames belong to the old stream
             LocomotionState shown = heldCount > 0 ? held[(heldStart + heldCount - 1) % MaxHeld].State : Latest.State;
             for (int i = 0; i < batchEnteredCount && heldCount < MaxHeld; i++)

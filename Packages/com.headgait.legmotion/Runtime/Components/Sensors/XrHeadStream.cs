@@ -40,6 +40,9 @@ namespace HeadGait.Unity
         public EventTimeline Timeline => timeline;
         public ReportedAccelerationGate Gate => gate;
 
+        /// <summary>A pose rate too low for the pose path (once), for the caller to log; null when none is new.</summary>
+        public string TakeWarning() => fromPose.TakeWarning();
+
         /// <summary>True while samples come from the tracked pose.</summary>
         public bool UsingPose => !(AllowReported && gate.TrustReported);
 

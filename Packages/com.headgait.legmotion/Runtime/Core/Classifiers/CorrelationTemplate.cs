@@ -307,7 +307,7 @@ namespace HeadGait
 
         public void Save(string path) => AtomicFile.WriteAllText(path, Serialize());
 
-        public static CorrelationTemplate Load(string path) => Parse(File.ReadAllText(path, Encoding.UTF8), path);
+        public static CorrelationTemplate Load(string path) => Parse(InputLimits.ReadAllText(path, InputLimits.MaxTextModelBytes, "a text model file"), path);
 
         /// <summary>Reads a template written by <see cref="Serialize"/>; throws <see cref="FormatException"/> naming the source and the key.</summary>
         public static CorrelationTemplate Parse(string text, string source = "COR template")

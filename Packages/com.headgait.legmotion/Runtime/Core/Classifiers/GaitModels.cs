@@ -38,17 +38,21 @@ namespace HeadGait
                 m.Problems.Add($"{folder}: model folder not found");
                 return m;
             }
-            m.Threshold = Try(m, Path.Combine(folder, ThresholdFile), ThresholdSettings.Load);
-            m.Correlation = Try(m, Path.Combine(folder, CorrelationFile), CorrelationTemplate.Load);
+            m.Threshold = Try(m, Path.Combine(folder, ThresholdFile), p => Checked(ThresholdSettings.Load(p), s => new ThresholdClassifier(s), p));
+            m.Correlation = Try(m, Path.Combine(folder, CorrelationFile), p => Checked(CorrelationTemplate.Load(p), t => new CorrelationClassifier(t), p));
             // Building the classifier once checks every tensor's shape against the model's features and classes.
-            m.Svm = Try(m, Path.Combine(folder, SvmFile), p => Checked(ModelFile.Load(p), f => new SvmClassifier(f)));
-            m.Blstm = Try(m, Path.Combine(folder, BlstmFile), p => Checked(ModelFile.Load(p), f => new BlstmClassifier(f)));
+            m.Svm = Try(m, Path.Combine(folder, SvmFile), p => Checked(ModelFile.Load(p), f => new SvmClassifier(f), p));
+            m.Blstm = Try(m, Path.Combine(folder, BlstmFile), p => Checked(ModelFile.Load(p), f => new BlstmClassifier(f), p));
             return m;
         }
 
-        static ModelFile Checked(ModelFile file, Func<ModelFile, LearnedClassifier> build)
+        /// <summary>
+        /// The file, once its classifier could be built and decides more than one class on the reference windows
+        /// (<see cref="DecisionCheck"/>); throws otherwise, naming <paramref name="source"/>.
+        /// </summary>
+        public static T Checked<T>(T file, Func<T, IGaitClassifier> build, string source)
         {
-            build(file);
+            DecisionCheck.Require(build(file), source);
             return file;
         }
 

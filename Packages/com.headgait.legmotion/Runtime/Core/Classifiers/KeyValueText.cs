@@ -12,6 +12,9 @@ namespace HeadGait
     /// </summary>
     public sealed class KeyValueText
     {
+        /// <summary>The closing line every file ends with: a file cut short anywhere (a full disk, a copy cut off) lacks it.</summary>
+        public const string EndLine = "end";
+
         readonly Dictionary<string, string> values = new Dictionary<string, string>();
 
         KeyValueText(string source)
@@ -26,11 +29,12 @@ namespace HeadGait
             if (text == null) throw new FormatException($"{source}: no text");
             var kv = new KeyValueText(source);
             if (text.Length > 0 && text[0] == '\uFEFF') text = text.Substring(1);
-            bool first = true;
+            bool first = true, ended = false;
             foreach (var raw in text.Replace("\r\n", "\n").Replace('\r', '\n').Split('\n'))
             {
                 string line = raw.Trim();
                 if (line.Length == 0) continue;
+                if (ended) throw new FormatException($"{source}: '{Shorten(line)}' follows the closing '{EndLine}' line");
                 if (first)
                 {
                     if (line != magic) throw new FormatException($"{source}: first line must be '{magic}'");
@@ -38,6 +42,11 @@ namespace HeadGait
                     continue;
                 }
                 if (line.StartsWith("#", StringComparison.Ordinal)) continue;
+                if (line == EndLine)
+                {
+                    ended = true;
+                    continue;
+                }
                 int eq = line.IndexOf('=');
                 if (eq <= 0) throw new FormatException($"{source}: line '{Shorten(line)}' is not key=value");
                 string key = line.Substring(0, eq).Trim();
@@ -45,13 +54,14 @@ namespace HeadGait
                 kv.values[key] = line.Substring(eq + 1).Trim();
             }
             if (first) throw new FormatException($"{source}: empty; first line must be '{magic}'");
+            if (!ended) throw new FormatException($"{source}: ends before its closing '{EndLine}' line: truncated (or written before the line was required: train again, or add '{EndLine}' after checking the values)");
             return kv;
         }
 
         public static KeyValueText Load(string path, string magic)
         {
             if (!File.Exists(path)) throw new FileNotFoundException($"{path}: file not found", path);
-            return Parse(File.ReadAllText(path, Encoding.UTF8), magic, path);
+            return Parse(InputLimits.ReadAllText(path, InputLimits.MaxTextModelBytes, "a text model file"), magic, path);
         }
 
         public bool Has(string key) => values.ContainsKey(key);
@@ -143,6 +153,7 @@ namespace HeadGait
             sb.Append(magic).Append('\n');
             if (!string.IsNullOrEmpty(comment)) sb.Append("# ").Append(comment.Replace("\n", " ")).Append('\n');
             foreach (var kv in pairs) sb.Append(kv.Key).Append('=').Append(kv.Value).Append('\n');
+            sb.Append(EndLine).Append('\n');
             return sb.ToString();
         }
     }

@@ -123,7 +123,7 @@ namespace HeadGait
 
         public void Save(string path) => AtomicFile.WriteAllText(path, Serialize());
 
-        public static ThresholdSettings Load(string path) => Parse(File.ReadAllText(path, Encoding.UTF8), path);
+        public static ThresholdSettings Load(string path) => Parse(InputLimits.ReadAllText(path, InputLimits.MaxTextModelBytes, "a text model file"), path);
 
         public static ThresholdSettings Parse(string text, string source = "THR settings")
         {

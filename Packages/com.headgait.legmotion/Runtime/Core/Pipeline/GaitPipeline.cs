@@ -17,6 +17,7 @@ namespace HeadGait
         readonly StanceLatch advancedStance = new StanceLatch(); // the feet's stance shares of predictions moved ahead by SourceLag
         readonly LearnedWindowBatch batch; // null unless the classifier is a learned one
         bool batching;                      // inside PushBatch: windows and restarts are queued, not run
+        bool settled = true;                // standing since a restart, no window since: a refused stream need not restart again
 
         public GaitPipeline(IGaitClassifier classifier, PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null)
         {
@@ -59,8 +60,12 @@ namespace HeadGait
         public SampleOutcome Push(in ImuSample sample)
         {
             var outcome = preprocessor.Push(sample, onWindow);
-            if (outcome == SampleOutcome.AcceptedAfterGap || outcome == SampleOutcome.AcceptedAfterRebase)
+            // A hole or a new clock, or a stream no window can come from (timestamps too coarse, samples slower than the lowest
+            // rate): the avatar stands rather than hold its last frame.
+            if (outcome == SampleOutcome.AcceptedAfterGap || outcome == SampleOutcome.AcceptedAfterRebase
+                || (!settled && (outcome == SampleOutcome.SkippedCoarseClock || preprocessor.BelowLowestRate)))
             {
+                settled = true;
                 if (batching) batch.AddRestart(sample.Time);
                 else Restart(sample.Time);
             }
@@ -112,11 +117,23 @@ namespace HeadGait
         }
 
         /// <summary>
+        /// The sensor fell silent for longer than the preprocessor's MaxGap (the caller measures the silence, e.g. in frames
+        /// without samples): the avatar stands now instead of holding its last frame until new samples arrive.
+        /// </summary>
+        public void Settle(double time)
+        {
+            if (settled) return;
+            settled = true;
+            Restart(time);
+        }
+
+        /// <summary>
         /// The signal broke off or its clock moved: forget the stale history and let the avatar stand rather than freeze
         /// mid-stride until the next full window.
         /// </summary>
         void Restart(double time)
         {
+            settled = true;
             classifier.Reset();
             animator.Reset();
             LatestPrediction = GaitPrediction.Standing(time);
@@ -138,6 +155,7 @@ namespace HeadGait
 
         void Publish(GaitPrediction prediction)
         {
+            settled = false;
             if (SourceLag != 0) prediction = Advanced(prediction, SourceLag + classifier.PoseFitDelay);
             LatestPrediction = prediction;
             Latest = animator.Update(prediction);
@@ -164,6 +182,7 @@ namespace HeadGait
             animator.Reset();
             LatestPrediction = default;
             Latest = AnimatorFrame.Standing(0);
+            settled = true;
         }
     }
 }

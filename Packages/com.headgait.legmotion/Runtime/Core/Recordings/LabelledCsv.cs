@@ -18,6 +18,8 @@ namespace HeadGait
         {
             public readonly List<string> Warnings = new List<string>();
             public readonly Dictionary<string, string> Metadata = new Dictionary<string, string>();
+            /// <summary>Bad rows beyond <see cref="InputLimits.MaxListedWarnings"/>: counted in one closing warning.</summary>
+            public int Unlisted;
         }
 
         /// <summary>
@@ -30,7 +32,8 @@ namespace HeadGait
             Action<double[], int, GaitPhase?, GaitPhase?> row)
         {
             var result = new Result();
-            int lineNo = 0;
+            reader = InputLimits.BoundLines(reader, source); // a line without end (a file of zeros) is refused, not held
+            int lineNo = 0, rows = 0;
             int[] idx = null;
             int tl = -1, tr = -1, columnCount = 0;
             string line;
@@ -58,9 +61,10 @@ namespace HeadGait
                     columnCount = cells.Length;
                     continue;
                 }
+                InputLimits.CheckRows(++rows, source);
                 if (cells.Length != columnCount)
                 {
-                    Bad(strict, result.Warnings, source, lineNo, $"expected {columnCount} cells, found {cells.Length}");
+                    Bad(strict, result, source, lineNo, $"expected {columnCount} cells, found {cells.Length}");
                     continue;
                 }
                 string error = null;
@@ -74,7 +78,7 @@ namespace HeadGait
                 }
                 if (error != null)
                 {
-                    Bad(strict, result.Warnings, source, lineNo, error);
+                    Bad(strict, result, source, lineNo, error);
                     continue;
                 }
                 if (tl < 0)
@@ -90,18 +94,20 @@ namespace HeadGait
                 }
                 if (!GaitPhases.TryParse(l, out var pl) || !GaitPhases.TryParse(r, out var pr))
                 {
-                    Bad(strict, result.Warnings, source, lineNo, $"unknown phase label '{Shorten(l)}' / '{Shorten(r)}'");
+                    Bad(strict, result, source, lineNo, $"unknown phase label '{Shorten(l)}' / '{Shorten(r)}'");
                     continue;
                 }
                 if ((pl == GaitPhase.Standing) != (pr == GaitPhase.Standing))
                 {
-                    Bad(strict, result.Warnings, source, lineNo, "one foot is labelled STAND and the other walking");
+                    Bad(strict, result, source, lineNo, "one foot is labelled STAND and the other walking");
                     continue;
                 }
                 row(v, lineNo, pl, pr);
             }
             if (idx == null)
                 throw new RecordingFormatException(source, Math.Max(lineNo, 1), $"no header line (expected {string.Join(",", required)}[,phase_left,phase_right])");
+            if (result.Unlisted > 0)
+                result.Warnings.Add($"line {lineNo}: and {result.Unlisted} more bad row(s) after these (rows skipped, not listed)");
             return result;
         }
 
@@ -128,10 +134,11 @@ namespace HeadGait
             if (!hasL) tl = tr = -1;
         }
 
-        static void Bad(bool strict, List<string> warnings, string source, int lineNo, string message)
+        static void Bad(bool strict, Result result, string source, int lineNo, string message)
         {
             if (strict) throw new RecordingFormatException(source, lineNo, message);
-            warnings.Add($"line {lineNo}: {message} (row skipped)");
+            if (result.Warnings.Count < InputLimits.MaxListedWarnings) result.Warnings.Add($"line {lineNo}: {message} (row skipped)");
+            else result.Unlisted++;
         }
 
         static string Shorten(string s) => s.Length > 40 ? s.Substring(0, 40) + "..." : s;

@@ -66,7 +66,7 @@ namespace HeadGait
         /// <summary>True when the file starts with the pose magic line (after any byte-order mark).</summary>
         public static bool IsPoseFile(string path)
         {
-            using (var reader = new StreamReader(path, Encoding.UTF8))
+            using (var reader = InputLimits.OpenText(path, InputLimits.MaxRecordingBytes, "a recording"))
             {
                 string first = reader.ReadLine();
                 return first != null && first.TrimStart('\uFEFF').Trim() == Magic;
@@ -76,17 +76,23 @@ namespace HeadGait
         /// <summary>Reads a pose recording; bad rows are skipped with warnings, or throw in strict mode.</summary>
         public static List<(PoseSample pose, GaitPhase? left, GaitPhase? right, int line)> Load(string path, bool strict, out List<string> warnings)
         {
-            if (!File.Exists(path)) throw new FileNotFoundException($"Pose recording not found: {path}", path);
             var rows = new List<(PoseSample, GaitPhase?, GaitPhase?, int)>();
-            using (var reader = new StreamReader(path, Encoding.UTF8))
+            Read(path, strict, out warnings, (pose, l, r, line) => rows.Add((pose, l, r, line)));
+            return rows;
+        }
+
+        /// <summary>Reads a pose recording row by row into <paramref name="row"/> (nothing kept), within <see cref="InputLimits"/>.</summary>
+        static void Read(string path, bool strict, out List<string> warnings, Action<PoseSample, GaitPhase?, GaitPhase?, int> row)
+        {
+            if (!File.Exists(path)) throw new FileNotFoundException($"Pose recording not found: {path}", path);
+            using (var reader = InputLimits.OpenText(path, InputLimits.MaxRecordingBytes, "a pose recording"))
             {
                 var limits = new[] { RecordingCsv.MaxTimestamp, MaxPosition, MaxPosition, MaxPosition, 2, 2, 2, 2 };
                 var units = new[] { "s", "m", "m", "m", "", "", "", "" };
                 var table = LabelledCsv.Read(reader, path, strict, RequiredColumns, limits, units,
-                    (v, line, l, r) => rows.Add((new PoseSample(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), l, r, line)));
+                    (v, line, l, r) => row(new PoseSample(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]), l, r, line));
                 warnings = table.Warnings;
             }
-            return rows;
         }
 
         /// <summary>Writes a pose recording (whole or not at all: see <see cref="AtomicFile"/>).</summary>
@@ -111,16 +117,18 @@ namespace HeadGait
         /// </summary>
         public static Recording ToAcceleration(string path, bool strict = false)
         {
-            var rows = Load(path, strict, out var warnings);
             var estimator = new PoseAccelerationEstimator();
             var samples = new List<RecordedSample>();
             double lagSum = 0;
-            foreach (var (pose, left, right, line) in rows)
+            // Streamed: each pose goes through the estimator as it is read, so only the acceleration samples are kept.
+            Read(path, strict, out var warnings, (pose, left, right, line) =>
             {
-                if (!estimator.Push(pose.Time, pose.Px, pose.Py, pose.Pz, pose.Qx, pose.Qy, pose.Qz, pose.Qw, out var imu)) continue;
+                if (!estimator.Push(pose.Time, pose.Px, pose.Py, pose.Pz, pose.Qx, pose.Qy, pose.Qz, pose.Qw, out var imu)) return;
                 lagSum += estimator.Lag;
                 samples.Add(left.HasValue ? new RecordedSample(imu, left.Value, right.Value, line) : new RecordedSample(imu, line));
-            }
+            });
+            string slow = estimator.TakeWarning();
+            if (slow != null) warnings.Add(slow);
             var rec = new Recording(Path.GetFileNameWithoutExtension(path), samples, warnings);
             rec.SourceLag = samples.Count > 0 ? lagSum / samples.Count : 0;
             rec.Metadata["source"] = "head pose through PoseAccelerationEstimator";

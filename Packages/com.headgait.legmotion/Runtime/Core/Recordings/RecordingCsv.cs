@@ -44,7 +44,7 @@ namespace HeadGait
         {
             if (path == null) throw new ArgumentNullException(nameof(path));
             if (!File.Exists(path)) throw new FileNotFoundException($"Recording not found: {path}", path);
-            using (var reader = new StreamReader(path, Encoding.UTF8))
+            using (var reader = InputLimits.OpenText(path, InputLimits.MaxRecordingBytes, "a recording"))
             {
                 return Read(reader, Path.GetFileNameWithoutExtension(path), strict, path);
             }

@@ -32,6 +32,9 @@ namespace HeadGait
         readonly double[,] p = new double[Capacity, 3];
         readonly double[,] q = new double[Capacity, 4];
         int count, head;
+        int holesInARow;
+        bool warned;
+        string warning;
 
         public PoseAccelerationEstimator(double gravity = 9.80665, double maxGap = 0.1, double windowSeconds = DefaultWindowSeconds)
         {
@@ -45,6 +48,29 @@ namespace HeadGait
         public double WindowSeconds { get; }
 
         public int Skipped { get; private set; }
+
+        /// <summary>
+        /// The lowest pose rate that gives samples (Hz): the fit needs five poses within <see cref="MaxSpanFactor"/> times
+        /// <see cref="WindowSeconds"/> (about 29 Hz for the default 120 ms); slower poses give none, with a warning once.
+        /// </summary>
+        public double LowestRate => 4 / (MaxSpanFactor * WindowSeconds);
+
+        /// <summary>A rate problem met since the last call, in words (once per estimator), or null.</summary>
+        public string TakeWarning()
+        {
+            string w = warning;
+            warning = null;
+            return w;
+        }
+
+        void WarnTooSlow(double interval)
+        {
+            if (warned) return;
+            warned = true;
+            warning = string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                "poses come {0:G3} s apart ({1:G3} Hz), slower than the pose path's lowest rate of {2:G3} Hz: no acceleration can be fitted and the avatar stands",
+                interval, 1 / interval, LowestRate);
+        }
 
         /// <summary>How far the last sample's motion lies behind its timestamp (s): half the fit window, about 60 ms.</summary>
         public double Lag { get; private set; }
@@ -77,6 +103,7 @@ namespace HeadGait
                 if (time < last - PreprocessorSettings.DefaultBackwardTolerance || time - last > maxGap)
                 {
                     // A hole, or a clock that restarted further back than a late pose: fit afresh from this pose.
+                    if (time - last > maxGap && ++holesInARow >= 3) WarnTooSlow(time - last);
                     Reset();
                 }
                 else if (!(time > last))
@@ -101,7 +128,9 @@ namespace HeadGait
             int n = 1;
             while (n < count && time - t[Index(n)] <= WindowSeconds + 1e-9) n++;
             if (n % 2 == 0) n = n < count && time - t[Index(n)] <= MaxSpanFactor * WindowSeconds ? n + 1 : n - 1;
+            if (n < 5 && count >= 5) WarnTooSlow((time - t[Index(count - 1)]) / (count - 1)); // five poses held, too far apart to fit
             if (n < 5 || time - t[Index(n - 1)] < 0.5 * WindowSeconds) return false;
+            holesInARow = 0;
             int centre = Index(n / 2);
             double tc = t[centre];
             // Least squares x(t) = a + b (t - tc) + c (t - tc)^2; the acceleration is 2c.

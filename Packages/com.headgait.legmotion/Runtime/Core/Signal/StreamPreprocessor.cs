@@ -44,6 +44,19 @@ namespace HeadGait
         /// <summary>Suspect samples that must follow each other like a stream (each within MaxGap) before the stream re-bases on them.</summary>
         public int RebaseSamples = 3;
 
+        /// <summary>
+        /// The lowest input rate that makes windows (Hz): samples at most <see cref="MaxGap"/> apart (10 Hz by default); a slower
+        /// stream is all holes, gets a warning once and leaves the avatar standing.
+        /// </summary>
+        public double LowestRate => 1.0 / MaxGap;
+
+        /// <summary>
+        /// Largest timestamp magnitude whose double still resolves 1 % of a grid step (about 4.5e11 s at 100 Hz; an epoch in
+        /// seconds is 1.7e9). Beyond it neighbouring samples share or skip timestamps (1.7e15, epoch microseconds read as seconds,
+        /// resolves only 0.25 s): such samples are refused with a warning once.
+        /// </summary>
+        public double MaxResolvableTime => 0.01 / SampleRate * 4503599627370496.0; // 2^52 spacings per binade
+
         public PreprocessorSettings Clone() => (PreprocessorSettings)MemberwiseClone();
 
         public void Validate()
@@ -73,6 +86,8 @@ namespace HeadGait
         SkippedSuspectTime,
         /// <summary>Accepted as the first sample of a new time base that the following samples confirmed: the window restarted.</summary>
         AcceptedAfterRebase,
+        /// <summary>Refused: its timestamp is too large for a double to resolve the grid (<see cref="PreprocessorSettings.MaxResolvableTime"/>).</summary>
+        SkippedCoarseClock,
     }
 
     /// <summary>
@@ -104,6 +119,11 @@ namespace HeadGait
         double gridOrigin;    // time of grid index 0
         long filled;          // samples in the ring since the last (re)start
         long produced;
+        double lastSeen = double.NaN; // the last finite timestamp pushed, accepted or not: how far apart the samples come
+        double lastInterval;
+        int holesInARow;              // samples in a row that came more than MaxGap after the one before
+        string warning;               // a clock or rate problem not yet taken by TakeWarning
+        bool warnedCoarse, warnedSlow;
 
         public StreamPreprocessor() : this(new PreprocessorSettings()) { }
 
@@ -128,6 +148,34 @@ namespace HeadGait
         public int SkippedDuplicateTime { get; private set; }
         public int SkippedImplausible { get; private set; }
         public int SkippedSuspectTime { get; private set; }
+        /// <summary>Samples refused because their timestamps were too large to resolve the grid (see <see cref="PreprocessorSettings.MaxResolvableTime"/>).</summary>
+        public int SkippedCoarseClock { get; private set; }
+
+        /// <summary>
+        /// True while samples come further apart than <see cref="PreprocessorSettings.MaxGap"/> (<see cref="PreprocessorSettings.RebaseSamples"/>
+        /// holes in a row): slower than <see cref="PreprocessorSettings.LowestRate"/>, no window is made.
+        /// </summary>
+        public bool BelowLowestRate => holesInARow >= settings.RebaseSamples;
+
+        /// <summary>The clock or rate problems met so far, in words (empty when none): kept for <see cref="DescribeSkips"/>.</summary>
+        public string Problems { get; private set; } = "";
+
+        /// <summary>
+        /// A clock or rate problem met since the last call, in words, or null: each kind is reported once per preprocessor
+        /// (a timestamp too coarse for the grid; a stream slower than the lowest rate), for the caller to log once.
+        /// </summary>
+        public string TakeWarning()
+        {
+            string w = warning;
+            warning = null;
+            return w;
+        }
+
+        void Warn(string text)
+        {
+            warning = warning == null ? text : warning + "; " + text;
+            Problems = Problems.Length == 0 ? text : Problems + "; " + text;
+        }
         /// <summary>Times the stream moved to a new time base that its samples agreed on.</summary>
         public int Rebases { get; private set; }
         public int Gaps { get; private set; }
@@ -136,7 +184,7 @@ namespace HeadGait
         /// <summary>Resampled grid samples produced so far.</summary>
         public long Produced => produced;
 
-        public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible + SkippedSuspectTime;
+        public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible + SkippedSuspectTime + SkippedCoarseClock;
 
         /// <summary>
         /// What the clock policy skipped and why, for a person reading a replay ("12 out of time order, 1 not finite"), with
@@ -151,14 +199,18 @@ namespace HeadGait
             Add(SkippedSuspectTime, "far off the stream's clock (a jump no later sample followed)");
             Add(SkippedNotFinite, "not finite");
             Add(SkippedImplausible, $"beyond {settings.MaxMagnitude:0} m/s^2");
+            Add(SkippedCoarseClock, "with a timestamp too large to resolve");
             string skipped = parts.Count > 0 ? $"skipped {Skipped} sample(s): {string.Join(", ", parts)}" : "";
             string holes = Gaps > 0 || Rebases > 0 ? $"{Gaps} hole(s), {Rebases} clock re-base(s)" : "";
-            return skipped.Length > 0 && holes.Length > 0 ? skipped + "; " + holes : skipped + holes;
+            string text = skipped.Length > 0 && holes.Length > 0 ? skipped + "; " + holes : skipped + holes;
+            return Problems.Length == 0 ? text : text.Length == 0 ? Problems : text + "; " + Problems;
         }
 
         public void Reset()
         {
             hasPrevious = false;
+            lastSeen = double.NaN;
+            holesInARow = 0;
             suspectCount = 0;
             filled = 0;
             gridIndex = 0;
@@ -181,6 +233,12 @@ namespace HeadGait
                 return SampleOutcome.SkippedImplausible;
             }
             double smv = mag - settings.Gravity;
+            if (!ResolvesGrid(sample.Time))
+            {
+                SkippedCoarseClock++;
+                return SampleOutcome.SkippedCoarseClock;
+            }
+            NoteInterval(sample.Time);
 
             if (!hasPrevious)
             {
@@ -202,7 +260,7 @@ namespace HeadGait
             }
             // The stream's own clock goes on: whatever was held as suspect was a glitch (already counted).
             suspectCount = 0;
-            if (step > settings.MaxGap)
+            if (step > settings.MaxGap * (1 + 1e-9)) // a stream at exactly the lowest rate is no hole
             {
                 Gaps++;
                 Start(sample, smv, onWindow);
@@ -227,6 +285,51 @@ namespace HeadGait
             previousSmv = smv;
             Accepted++;
             return SampleOutcome.Accepted;
+        }
+
+        /// <summary>False (and a warning once) for a timestamp whose double cannot resolve 1 % of a grid step.</summary>
+        bool ResolvesGrid(double time)
+        {
+            double limit = settings.MaxResolvableTime;
+            if (Math.Abs(time) <= limit) return true;
+            if (!warnedCoarse)
+            {
+                warnedCoarse = true;
+                Warn(string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                    "timestamps near {0:G3} s are refused: a double there cannot tell samples {1:0.#} ms apart (it resolves only {2:G2} s); stamp samples in seconds from a recent origin such as start-up (an epoch in microseconds or nanoseconds read as seconds?); the avatar stands",
+                    time, 1000 / settings.SampleRate, Spacing(time)));
+            }
+            return false;
+        }
+
+        /// <summary>Distance from |t| to the next larger double.</summary>
+        static double Spacing(double t)
+        {
+            double a = Math.Abs(t);
+            return BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(a) + 1) - a;
+        }
+
+        /// <summary>Counts holes in a row; the third makes the stream slower than the lowest rate (a warning once).</summary>
+        void NoteInterval(double time)
+        {
+            double interval = time - lastSeen;
+            lastSeen = time;
+            if (!(interval > 0)) return; // first, repeated or backwards: says nothing about the rate
+            lastInterval = interval;
+            if (interval <= settings.MaxGap * (1 + 1e-9))
+            {
+                holesInARow = 0;
+                return;
+            }
+            holesInARow++;
+            if (holesInARow >= settings.RebaseSamples && !warnedSlow)
+            {
+                warnedSlow = true;
+                Warn(string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                    "samples come {0:G3} s apart ({1:G3} Hz), slower than the lowest rate of {2:G3} Hz (at most {3:G3} s apart): no window can be made and the avatar stands{4}",
+                    lastInterval, 1 / lastInterval, settings.LowestRate, settings.MaxGap,
+                    lastInterval >= 5 ? " (timestamps in milliseconds or microseconds rather than seconds?)" : ""));
+            }
         }
 
         /// <summary>Holds a sample far from the stream's clock; re-bases once enough follow it like a stream.</summary>

@@ -10,6 +10,9 @@ namespace HeadGait.Training
         /// <summary>Augmented copies of each labelled recording (see <see cref="RecordingAugmentation"/>) made per original.</summary>
         public const int DefaultAugmentedCopies = 2;
 
+        /// <summary>Most augmented copies per original: each is a whole recording held in memory, so the count bounds the memory training takes.</summary>
+        public const int MaxAugmentedCopies = 20;
+
         public const ulong DefaultSeed = 20261122;
 
         /// <summary>
@@ -18,6 +21,7 @@ namespace HeadGait.Training
         /// </summary>
         public static List<Recording> WithAugmentation(IReadOnlyList<Recording> recordings, int copies, ulong seed = DefaultSeed, AugmentationSettings settings = null)
         {
+            if (copies < 0 || copies > MaxAugmentedCopies) throw new ArgumentOutOfRangeException(nameof(copies), copies, $"augmented copies must be 0 to {MaxAugmentedCopies}");
             var list = new List<Recording>(recordings);
             foreach (var rec in recordings)
             {

@@ -13,6 +13,12 @@ namespace HeadGait
     /// </summary>
     public abstract class LearnedClassifier : IGaitClassifier
     {
+        /// <summary>Range of each channel's spread a model may standardise by (m/s^2; the trained ones hold 1.7 to 3).</summary>
+        public const double MinInputScale = 1e-3, MaxInputScale = 100;
+
+        /// <summary>Largest |mean| of a channel a model may subtract (m/s^2; the trained ones hold 0.3 or less).</summary>
+        public const double MaxAbsInputMean = 50;
+
         readonly double[] inputMean;
         readonly double[] inputScale;
         readonly double[] features;
@@ -58,8 +64,11 @@ namespace HeadGait
             int c = Features.Channels.Length;
             inputMean = model.Tensor("input_mean", c);
             inputScale = model.Tensor("input_scale", c);
+            // The channels' mean and spread over the training windows (m/s^2): what a head can produce, no more.
             foreach (var s in inputScale)
-                if (!(s > 0)) throw new ModelFormatException(model.Source, "input_scale must be positive");
+                if (!(s >= MinInputScale && s <= MaxInputScale)) throw new ModelFormatException(model.Source, $"input_scale holds {s:G4}, outside {MinInputScale}..{MaxInputScale} m/s^2 (what training produces)");
+            foreach (var m in inputMean)
+                if (!(Math.Abs(m) <= MaxAbsInputMean)) throw new ModelFormatException(model.Source, $"input_mean holds {m:G4}, outside -{MaxAbsInputMean}..{MaxAbsInputMean} m/s^2 (what training produces)");
             features = new double[Features.Width];
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];

@@ -133,7 +133,11 @@ namespace HeadGait
             byte[] bytes;
             try
             {
-                bytes = File.ReadAllBytes(path);
+                bytes = InputLimits.ReadAllBytes(path, InputLimits.MaxModelBytes, "a model file");
+            }
+            catch (InputLimitException e)
+            {
+                throw new ModelFormatException(path, e.Problem);
             }
             catch (IOException e)
             {

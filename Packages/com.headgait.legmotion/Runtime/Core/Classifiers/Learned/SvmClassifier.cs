@@ -13,6 +13,12 @@ namespace HeadGait
         public const string Kind = "svm";
 
         readonly int classes, width, vectors, degree;
+        /// <summary>Range of the kernel's gamma a model may hold (training on standardised features gives about 1 / features).</summary>
+        public const double MinGamma = 1e-6, MaxGamma = 10;
+
+        /// <summary>Largest |coef0| a model may hold.</summary>
+        public const double MaxAbsCoef0 = 100;
+
         readonly double gamma, coef0;
         readonly double[] supportVectors; // [nSV x D]
         readonly double[] dualCoef;       // [(K-1) x nSV]
@@ -41,7 +47,10 @@ namespace HeadGait
             gamma = model.NeedDouble("gamma");
             coef0 = model.NeedDouble("coef0");
             degree = model.NeedInt("degree", 1, 5);
-            if (!(gamma > 0)) throw new ModelFormatException(model.Source, "'gamma' must be positive");
+            // Ranges training can produce (standardised features: gamma about 1 / features, coef0 a small offset); beyond
+            // them the kernel overflows or drowns every decision in one term.
+            if (!(gamma >= MinGamma && gamma <= MaxGamma)) throw new ModelFormatException(model.Source, $"'gamma' is {gamma:G4}, outside {MinGamma}..{MaxGamma} (what training produces)");
+            if (!(Math.Abs(coef0) <= MaxAbsCoef0)) throw new ModelFormatException(model.Source, $"'coef0' is {coef0:G4}, outside -{MaxAbsCoef0}..{MaxAbsCoef0} (what training produces)");
             var nSupport = model.Tensor("n_support", classes);
             start = new int[classes];
             count = new int[classes];

@@ -65,7 +65,7 @@ namespace HeadGait.Mocap
         public static BvhFile Load(string path)
         {
             if (!File.Exists(path)) throw new FileNotFoundException($"BVH file not found: {path}", path);
-            return Parse(File.ReadAllText(path), Path.GetFileName(path));
+            return Parse(InputLimits.ReadAllText(path, InputLimits.MaxBvhBytes, "a BVH file"), Path.GetFileName(path));
         }
 
         public static BvhFile Parse(string text, string name = "motion.bvh")
@@ -77,12 +77,17 @@ namespace HeadGait.Mocap
             reader.Expect("HIERARCHY");
             string word = reader.Next("ROOT");
             if (word != "ROOT") throw reader.Error($"expected ROOT, found '{word}'");
-            ReadJoint(reader, bvh, -1, false);
+            ReadSkeleton(reader, bvh);
             if (bvh.Joints.Count < 2) throw reader.Error("the skeleton has no joints below its root");
             reader.Expect("MOTION");
             reader.Expect("Frames:");
             int frames = reader.NextInt("frame count");
             if (frames < 0) throw reader.Error($"negative frame count {frames}");
+            if (frames > InputLimits.MaxBvhFrames)
+                throw reader.Error($"declares {frames} frames, over the limit of {InputLimits.MaxBvhFrames} (InputLimits.MaxBvhFrames)");
+            // Every value takes at least two characters: a count the text cannot hold is refused before anything is kept.
+            if ((long)frames * bvh.ChannelCount > text.Length / 2 + 1)
+                throw reader.Error($"declares {frames} frames of {bvh.ChannelCount} channels, more values than the file holds: truncated?");
             reader.Expect("Frame");
             reader.Expect("Time:");
             bvh.FrameTime = reader.NextDouble("frame time");
@@ -102,46 +107,68 @@ namespace HeadGait.Mocap
             return bvh;
         }
 
-        static void ReadJoint(Tokens reader, BvhFile bvh, int parent, bool endSite)
+        /// <summary>
+        /// The skeleton below ROOT, read with an explicit stack rather than recursion, so no nesting can overflow the call
+        /// stack; deeper than <see cref="InputLimits.MaxBvhDepth"/> or more than <see cref="InputLimits.MaxBvhChannels"/>
+        /// channels is refused.
+        /// </summary>
+        static void ReadSkeleton(Tokens reader, BvhFile bvh)
         {
-            var joint = new BvhJoint { Parent = parent, IsEndSite = endSite };
-            if (endSite)
+            var open = new List<int>(); // joints whose '}' is still to come, innermost last
+            int parent = -1;
+            bool endSite = false;
+            while (true)
             {
-                reader.Expect("Site");
-                joint.Name = (parent >= 0 ? bvh.Joints[parent].Name : "") + "_End";
-            }
-            else
-            {
-                joint.Name = reader.Next("joint name");
-            }
-            int index = bvh.Joints.Count;
-            bvh.Joints.Add(joint);
-            reader.Expect("{");
-            reader.Expect("OFFSET");
-            for (int k = 0; k < 3; k++) joint.Offset[k] = reader.NextDouble("offset");
-            string word = reader.Next("CHANNELS, JOINT, End or }");
-            if (word == "CHANNELS")
-            {
-                if (endSite) throw reader.Error("an End Site has no channels");
-                int n = reader.NextInt("channel count");
-                if (n < 0 || n > 6) throw reader.Error($"joint '{joint.Name}' declares {n} channels (0 to 6 allowed)");
-                joint.Channels = new BvhChannel[n];
-                for (int c = 0; c < n; c++)
+                // A new joint (ROOT, JOINT or End Site) starts here.
+                if (open.Count >= InputLimits.MaxBvhDepth)
+                    throw reader.Error($"joints nest deeper than {InputLimits.MaxBvhDepth}, the limit of a skeleton (InputLimits.MaxBvhDepth)");
+                var joint = new BvhJoint { Parent = parent, IsEndSite = endSite };
+                if (endSite)
                 {
-                    string ch = reader.Next("channel name");
-                    if (!Enum.TryParse(ch, true, out joint.Channels[c]) || int.TryParse(ch, out _))
-                        throw reader.Error($"unknown channel '{ch}' on joint '{joint.Name}'");
+                    reader.Expect("Site");
+                    joint.Name = (parent >= 0 ? bvh.Joints[parent].Name : "") + "_End";
                 }
-                joint.FirstChannel = bvh.ChannelCount;
-                bvh.ChannelCount += n;
-                word = reader.Next("JOINT, End or }");
-            }
-            while (word != "}")
-            {
-                if (word == "JOINT") ReadJoint(reader, bvh, index, false);
-                else if (word == "End") ReadJoint(reader, bvh, index, true);
-                else throw reader.Error($"expected JOINT, End or '}}' in joint '{joint.Name}', found '{word}'");
-                word = reader.Next("JOINT, End or }");
+                else
+                {
+                    joint.Name = reader.Next("joint name");
+                }
+                int index = bvh.Joints.Count;
+                bvh.Joints.Add(joint);
+                open.Add(index);
+                reader.Expect("{");
+                reader.Expect("OFFSET");
+                for (int k = 0; k < 3; k++) joint.Offset[k] = reader.NextDouble("offset");
+                string word = reader.Next("CHANNELS, JOINT, End or }");
+                if (word == "CHANNELS")
+                {
+                    if (endSite) throw reader.Error("an End Site has no channels");
+                    int n = reader.NextInt("channel count");
+                    if (n < 0 || n > 6) throw reader.Error($"joint '{joint.Name}' declares {n} channels (0 to 6 allowed)");
+                    if (bvh.ChannelCount + n > InputLimits.MaxBvhChannels)
+                        throw reader.Error($"more than {InputLimits.MaxBvhChannels} channels, the limit of a skeleton (InputLimits.MaxBvhChannels)");
+                    joint.Channels = new BvhChannel[n];
+                    for (int c = 0; c < n; c++)
+                    {
+                        string ch = reader.Next("channel name");
+                        if (!Enum.TryParse(ch, true, out joint.Channels[c]) || int.TryParse(ch, out _))
+                            throw reader.Error($"unknown channel '{ch}' on joint '{joint.Name}'");
+                    }
+                    joint.FirstChannel = bvh.ChannelCount;
+                    bvh.ChannelCount += n;
+                    word = reader.Next("JOINT, End or }");
+                }
+                // Close joints until one opens a child (or the root closes).
+                while (word == "}")
+                {
+                    open.RemoveAt(open.Count - 1);
+                    if (open.Count == 0) return;
+                    word = reader.Next("JOINT, End or }");
+                }
+                int current = open[open.Count - 1];
+                if (word == "JOINT") endSite = false;
+                else if (word == "End") endSite = true;
+                else throw reader.Error($"expected JOINT, End or '}}' in joint '{bvh.Joints[current].Name}', found '{word}'");
+                parent = current;
             }
         }
 
