@@ -5,7 +5,7 @@ using UnityEngine;
 
 namespace HeadGait.Editor
 {
-    /// <summary>Tools > HeadGait: evaluate a recording and train a COR template from inside the editor.</summary>
+    /// <summary>Tools > HeadGait: evaluate a recording, train a COR template and build the locomotion Animator Controller from inside the editor.</summary>
     public static class HeadGaitMenu
     {
         [MenuItem("Tools/HeadGait/Evaluate Recording...")]
@@ -51,6 +51,55 @@ namespace HeadGait.Editor
                 AssetDatabase.Refresh();
             }
             catch (System.Exception e) when (e is RecordingFormatException || e is IOException || e is System.InvalidOperationException)
+            {
+                EditorUtility.DisplayDialog("HeadGait", e.Message, "OK");
+            }
+        }
+
+        /// <summary>The package's gait clips, as the Animator Controller's states play them.</summary>
+        const string ClipFolder = "Packages/com.headgait.legmotion/Runtime/Animation/";
+
+        /// <summary>The COR template whose phase map times the package's clips (as `headgait clips` uses it).</summary>
+        const string PackageTemplate = "Packages/com.headgait.legmotion/Models/" + GaitModels.CorrelationFile;
+
+        [MenuItem("Tools/HeadGait/Create Animator Controller...")]
+        static void CreateAnimatorController()
+        {
+            string path = EditorUtility.SaveFilePanelInProject("Create the HeadGait locomotion Animator Controller", "HeadGait Legs", "controller",
+                "States, parameters and transitions as the package's HeadGait Legs.controller; its states play the package's gait clips.");
+            if (string.IsNullOrEmpty(path)) return;
+            var clips = new System.Collections.Generic.Dictionary<LocomotionState, Motion>();
+            foreach (var state in LocomotionController.States)
+            {
+                var clip = AssetDatabase.LoadAssetAtPath<AnimationClip>(ClipFolder + GaitClips.Name(state) + ".anim");
+                if (clip == null)
+                {
+                    EditorUtility.DisplayDialog("HeadGait", $"The gait clip {ClipFolder}{GaitClips.Name(state)}.anim is missing; reinstall the package.", "OK");
+                    return;
+                }
+                clips[state] = clip;
+            }
+            LocomotionControllerBuilder.Create(path, clips);
+            Debug.Log($"HeadGait: wrote {path}");
+        }
+
+        [MenuItem("Tools/HeadGait/Create Gait Clips and Animator Controller...")]
+        static void CreateClipsAndController()
+        {
+            string template = EditorUtility.OpenFilePanel("COR template whose phase map times the clips (cancel: the package's)", Path.GetFullPath("Packages/com.headgait.legmotion/Models"), "txt");
+            string path = EditorUtility.SaveFilePanelInProject("Create the HeadGait gait clips and locomotion Animator Controller", "HeadGait Legs", "controller",
+                "The six gait clips are written beside the controller, timed by the COR template's phase map.");
+            if (string.IsNullOrEmpty(path)) return;
+            try
+            {
+                var map = (string.IsNullOrEmpty(template)
+                    ? CorrelationTemplate.Parse(AssetDatabase.LoadAssetAtPath<TextAsset>(PackageTemplate)?.text ?? throw new IOException(PackageTemplate + " is missing; reinstall the package"), PackageTemplate)
+                    : CorrelationTemplate.Load(template)).PhaseMap;
+                var clips = GaitClipBuilder.Create(path.Substring(0, path.LastIndexOf('/')), map);
+                LocomotionControllerBuilder.Create(path, clips);
+                Debug.Log($"HeadGait: wrote {path} and its six gait clips beside it (right initial contact at stride {map.RightOffset:F4})");
+            }
+            catch (System.Exception e) when (e is IOException || e is System.FormatException)
             {
                 EditorUtility.DisplayDialog("HeadGait", e.Message, "OK");
             }

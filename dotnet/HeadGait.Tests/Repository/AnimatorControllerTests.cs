@@ -17,7 +17,7 @@ namespace HeadGait.Tests
 
         static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
 
-        static AnimatorControllerAsset Shipped()
+        internal static AnimatorControllerAsset Shipped()
         {
             string path = Path.Combine(Package, GaitAssetFiles.Controller);
             return AnimatorControllerAsset.Load(path, Path.GetDirectoryName(path));
@@ -26,9 +26,10 @@ namespace HeadGait.Tests
         static CorrelationTemplate template;
         static IGaitClassifier Cor() => new CorrelationClassifier(template ?? (template = CorrelationTemplate.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.CorrelationFile))));
 
-        static void CheckEveryStartAndStop(IReadOnlyList<Recording> recordings, int fps, AnyStateReading reading)
+        /// <param name="controller">The controller to run (default: the shipped one).</param>
+        internal static void CheckEveryStartAndStop(IReadOnlyList<Recording> recordings, int fps, AnyStateReading reading, AnimatorControllerAsset controller = null)
         {
-            var controller = Shipped();
+            controller = controller ?? Shipped();
             double limit = 1.0 / fps + AnimatorStateCheck.LongestStartTransition(controller) + 1e-6;
             var total = new AnimatorCheckResult { Fps = fps };
             foreach (var r in recordings) total.Add(AnimatorStateCheck.Run(r, Cor(), controller, fps, reading));

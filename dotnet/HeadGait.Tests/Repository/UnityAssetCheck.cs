@@ -351,9 +351,9 @@ namespace HeadGait.Tests
             foreach (var l in GaitClips.All)
                 if (!stateOf.ContainsValue(l)) problems.Add($"{file}: no state for {l} ('{GaitClips.Name(l)}')");
 
-            // Transitions: every state to every other (GaitControllerYaml.Transitions), each on GaitState == target with its
+            // Transitions: every state to every other (LocomotionController.Transitions), each on GaitState == target with its
             // interruption source, so no state the core passes through between two frames can strand the Animator.
-            var expected = new HashSet<string>(GaitControllerYaml.Transitions.Select(t => $"{t.From}->{t.To}"));
+            var expected = new HashSet<string>(LocomotionController.Transitions.Select(t => $"{t.From}->{t.To}"));
             var found = new HashSet<string>();
             void Transitions(string from, YamlNode list)
             {
@@ -377,7 +377,7 @@ namespace HeadGait.Tests
                                  && Get(conditions[0], "m_EventTreshold") == ((int)to).ToString(CultureInfo.InvariantCulture);
                     if (!right) problems.Add($"{file}: transition {key} is not taken on {AnimatorParameters.State} == {(int)to}");
                     if (t.Scalar("m_HasExitTime") != "0") problems.Add($"{file}: transition {key} waits for an exit time");
-                    string source = GaitControllerYaml.InterruptionSource(to).ToString(CultureInfo.InvariantCulture);
+                    string source = ((int)LocomotionController.InterruptionSource(to)).ToString(CultureInfo.InvariantCulture);
                     if (t.Scalar("m_InterruptionSource") != source) problems.Add($"{file}: transition {key} has interruption source {t.Scalar("m_InterruptionSource")}, not {source}");
                 }
             }
@@ -477,7 +477,7 @@ namespace HeadGait.Tests
                 double ic = map.StridePositionOfOnset(foot, GaitPhase.InitialContact);
                 // A contact at stride 0 is the loop's wrap: down at the first key, in the air at the one before the last.
                 var down = FootHeight(foot, ic);
-                var before = FootHeight(foot, (ic == 0 ? 1 : ic) - GaitClipYaml.BeforeEvent);
+                var before = FootHeight(foot, (ic == 0 ? 1 : ic) - GaitClipCurves.BeforeEvent);
                 if (down == null || before == null)
                     problems.Add($"{file}: no key at the {foot} initial contact (stride {ic:F4} of the phase map, {ic * length:F4} s)");
                 else if (Math.Abs(down.Value) > Contact || before.Value <= Contact)

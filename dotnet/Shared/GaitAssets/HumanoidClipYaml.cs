@@ -37,8 +37,8 @@ namespace HeadGait.Tooling
 
         public static string Write(GaitClips clips, LocomotionState clip)
         {
-            var keys = GaitClipYaml.KeyPositions(clips, clip);
-            double length = GaitClipYaml.Length;
+            var keys = GaitClipCurves.KeyPositions(clips, clip);
+            double length = GaitClipCurves.Length;
             var curves = new StringBuilder();
             foreach (var (attribute, value) in Curves())
             {
@@ -50,11 +50,11 @@ namespace HeadGait.Tooling
                 for (int k = 0; k < keys.Count; k++)
                 {
                     double u = keys[k];
-                    v[k] = value(GaitClipYaml.PoseAt(clips, clip, u));
+                    v[k] = value(GaitClipCurves.PoseAt(clips, clip, u));
                     if (clip != LocomotionState.Standing)
                     {
-                        double before = value(GaitClipYaml.PoseAt(clips, clip, Math.Max(0, u - SlopeStep)));
-                        double after = value(GaitClipYaml.PoseAt(clips, clip, Math.Min(1, u + SlopeStep)));
+                        double before = value(GaitClipCurves.PoseAt(clips, clip, Math.Max(0, u - SlopeStep)));
+                        double after = value(GaitClipCurves.PoseAt(clips, clip, Math.Min(1, u + SlopeStep)));
                         inSlope[k] = u > 0 ? (v[k] - before) / (SlopeStep * length) : (after - v[k]) / (SlopeStep * length);
                         outSlope[k] = u < 1 ? (after - v[k]) / (SlopeStep * length) : inSlope[k];
                     }
@@ -76,8 +76,8 @@ namespace HeadGait.Tooling
             var sb = new StringBuilder(UnityYaml.Header);
             UnityYaml.AppendClipHeader(sb, GaitClips.Name(clip));
             sb.Append("  m_EulerCurves: []\n  m_PositionCurves: []\n  m_ScaleCurves: []\n  m_FloatCurves:\n").Append(curves);
-            sb.Append("  m_PPtrCurves: []\n  m_SampleRate: 60\n  m_WrapMode: 0\n  m_Bounds:\n    m_Center: {x: 0, y: 0, z: 0}\n    m_Extent: {x: 0, y: 0, z: 0}\n");
-            UnityYaml.AppendClipSettings(sb, length, clip == LocomotionState.Walking || clip == LocomotionState.Standing, bakeRoot: true);
+            sb.Append("  m_PPtrCurves: []\n  m_SampleRate: ").Append(GaitClipCurves.SampleRate).Append("\n  m_WrapMode: 0\n  m_Bounds:\n    m_Center: {x: 0, y: 0, z: 0}\n    m_Extent: {x: 0, y: 0, z: 0}\n");
+            UnityYaml.AppendClipSettings(sb, length, GaitClipCurves.Loops(clip), bakeRoot: true);
             sb.Append("  m_EditorCurves:\n").Append(curves);
             sb.Append("  m_EulerEditorCurves: []\n  m_HasGenericRootTransform: 0\n  m_HasMotionFloatCurves: 0\n  m_Events: []\n");
             return sb.ToString();
