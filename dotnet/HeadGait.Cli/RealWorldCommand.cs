@@ -5,6 +5,7 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Threading.Tasks;
+using HeadGait.Training;
 
 namespace HeadGait.Cli
 {
@@ -21,16 +22,25 @@ namespace HeadGait.Cli
             var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a comma-separated list or all", DefaultValueFactory = _ => "all" };
             var models = new Option<string>("--models") { Description = "folder of trained models (default: the package's Models/)" };
             var perPerson = new Option<string>("--per-person") { Description = "also write every recording's scores (person, activity, classifier) to this CSV" };
+            var cv = new Option<string>("--cv") { Description = "person: leave one person out: each person's recordings are judged by walking gates trained on the --train recordings and the other people's recordings in --data (as `train --real` trains them); the rest of each model as shipped" };
+            var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
             var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, late start and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
-                data, classifier, models, perPerson,
+                data, classifier, models, perPerson, cv, train,
             };
-            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson)));
+            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train)));
             return command;
         }
 
-        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv)
+        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train)
         {
+            bool byPerson = cv switch
+            {
+                null or "" or "none" => false,
+                "person" => true,
+                _ => throw new UsageException($"--cv is 'person' or 'none', not '{cv}'"),
+            };
+            if (byPerson && (train == null || train.Length == 0)) throw new UsageException("--cv person needs --train (the labelled recordings the gates also learn from)");
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false);
             var unknown = recordings.Where(r => RealActivity.Of(r).Length == 0).Select(r => r.Name).ToList();
             if (unknown.Count > 0) Console.WriteLine($"warning: no '# activity=' for {string.Join(", ", unknown.Take(5))}{(unknown.Count > 5 ? ", ..." : "")}: counted under no activity");
@@ -40,6 +50,8 @@ namespace HeadGait.Cli
             var references = new RhythmReference[recordings.Count];
             Parallel.For(0, recordings.Count, i => references[i] = RhythmReference.Of(recordings[i]));
             Console.WriteLine($"HeadGait realworld: {recordings.Count} recordings of {recordings.Select(RealActivity.PersonOf).Distinct().Count()} people from {string.Join(", ", data)}, models from {folder}");
+            var gates = byPerson ? PersonGates(recordings, train) : null;
+            if (byPerson) Console.WriteLine($"Leave one person out: each person judged by walking gates trained on {string.Join(", ", train)} and the other {gates.Count - 1} people.");
             Console.WriteLine();
 
             var summaries = new List<RealWorldSummary>();
@@ -52,6 +64,7 @@ namespace HeadGait.Cli
                 {
                     var c = models.Create(name, out string w);
                     if (w != null) warning = w;
+                    if (gates != null) c = WithGates(c, gates[RealActivity.PersonOf(recordings[i])]);
                     var result = ReplayEvaluator.Run(recordings[i], c, keepTrace: true);
                     scores[i] = RealWorldScore.Of(recordings[i], references[i], c.Name, result.Predictions, result.Frames);
                 });
@@ -62,6 +75,40 @@ namespace HeadGait.Cli
             Print(summaries);
             if (perPersonCsv != null) WriteCsv(perPersonCsv, all);
             return 0;
+        }
+
+        /// <summary>Per person, the walking gates trained without that person's recordings (and with the labelled ones).</summary>
+        static Dictionary<string, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned)> PersonGates(List<Recording> recordings, string[] train)
+        {
+            var labelled = Inputs.LoadRecordings(Inputs.Expand(train, "*.csv"), false).Where(r => r.HasTruth).ToList();
+            if (labelled.Count == 0) throw new UsageException("no labelled recordings in --train");
+            var labelledWindows = GaitTraining.GateWindows.Of(GaitTraining.WithCalmCopies(GaitTraining.WithAugmentation(labelled, GaitTraining.DefaultAugmentedCopies)));
+            var people = recordings.GroupBy(RealActivity.PersonOf).ToList();
+            var windows = new GaitTraining.GateWindows[people.Count];
+            Parallel.For(0, people.Count, i => windows[i] = GaitTraining.GateWindows.Of(GaitTraining.RealGateRecordings(people[i])));
+            var gates = new Dictionary<string, (WalkingGate, WalkingGate, WalkingGate)>();
+            for (int i = 0; i < people.Count; i++)
+                gates[people[i].Key] = GaitTraining.GatesFrom(labelledWindows, GaitTraining.GateWindows.Union(windows.Where((_, k) => k != i)));
+            return gates;
+        }
+
+        /// <summary>The classifier with its walking gate replaced (THR, COR and the learned ones; the rest as loaded).</summary>
+        static IGaitClassifier WithGates(IGaitClassifier c, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) gates)
+        {
+            switch (c)
+            {
+                case ThresholdClassifier thr:
+                    var s = thr.Settings.Clone();
+                    s.Gate = gates.Threshold;
+                    return new ThresholdClassifier(s);
+                case CorrelationClassifier cor:
+                    return new CorrelationClassifier(cor.Template.With(gate: gates.Correlation));
+                case LearnedClassifier learned:
+                    learned.Gate = gates.Learned;
+                    return learned;
+                default:
+                    return c;
+            }
         }
 
         static string Pct(double v) => double.IsNaN(v) ? "-" : (100 * v).ToString("F1", CultureInfo.InvariantCulture) + " %";

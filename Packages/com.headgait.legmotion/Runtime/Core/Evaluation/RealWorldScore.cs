@@ -99,7 +99,7 @@ namespace HeadGait
             var left = new GaitPhase[n];
             var right = new GaitPhase[n];
             var walkingRef = new bool[n];
-            bool wasWalking = false;
+            var fragment = new int[n]; // which run of the avatar walking each frame belongs to (1, 2, ...); 0 standing
             for (int i = 0; i < n; i++)
             {
                 var f = frames[i];
@@ -113,8 +113,8 @@ namespace HeadGait
                 score.Seconds += dt;
                 if (avatar) score.AvatarWalkingSeconds += dt;
                 if (clf) score.ClassifierWalkingSeconds += dt;
-                if (avatar && !wasWalking) score.Fragments++;
-                wasWalking = avatar;
+                if (avatar && (i == 0 || fragment[i - 1] == 0)) score.Fragments++;
+                fragment[i] = avatar ? score.Fragments : 0;
                 if (!walkingRef[i]) continue;
                 score.ReferenceWalkingSeconds += dt;
                 if (avatar) score.AvatarWalkingInReference += dt;
@@ -125,13 +125,6 @@ namespace HeadGait
 
             // Contacts while both walk; alternation between consecutive ones of the same fragment.
             var contacts = PhaseEvents.Contacts(times, left, right);
-            var fragment = new int[n];
-            int current = 0;
-            for (int i = 0; i < n; i++)
-            {
-                if (frames[i].State != LocomotionState.Standing && (i == 0 || frames[i - 1].State == LocomotionState.Standing)) current++;
-                fragment[i] = frames[i].State == LocomotionState.Standing ? 0 : current;
-            }
             int previousFragment = -1;
             Foot previousFoot = Foot.Left;
             int k = 0;
