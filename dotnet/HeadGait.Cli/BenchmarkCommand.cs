@@ -32,16 +32,17 @@ namespace HeadGait.Cli
             var jolted = new Option<bool>("--jolted") { Description = $"also score each held-out clip with a {RecordingAugmentation.JoltHz:F0} Hz jolt of {RecordingAugmentation.JoltPeak} m/s^2 at every initial contact and {RecordingAugmentation.JoltNoise} m/s^2 noise: content above the mocap's 12 Hz that a real head-worn sensor has (made-up sizes)" };
             var sensorRate = new Option<double?>("--sensor-rate") { Description = "also score each held-out clip as a sensor sampling at this many Hz gives it (e.g. 50: the preprocessor resamples it to 100 Hz)" };
             var startStop = new Option<bool>("--start-stop") { Description = "also score each held-out walking clip made into a walk that starts and stops (standing, the walk growing in from a toe-off and fading out to a contact, standing): how late each classifier starts and stops on people's steps" };
+            var real = new Option<string[]>("--real") { Description = "unlabelled real recordings with '# activity=' headers that every fold's walking gates also learn from, as `train --real` (e.g. ../shared/data/glasses-train)", AllowMultipleArgumentsPerToken = true };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, sensorRate, startStop,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, sensorRate, startStop, real,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(jolted), parse.GetValue(sensorRate), parse.GetValue(startStop)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(jolted), parse.GetValue(sensorRate), parse.GetValue(startStop), parse.GetValue(real)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool jolted, double? sensorRate, bool startStop)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool jolted, double? sensorRate, bool startStop, string[] realPaths)
         {
             // Held-out clips changed as a real sensor or walk might differ from these recordings: each is scored by the same fold's classifiers.
             var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
@@ -65,6 +66,8 @@ namespace HeadGait.Cli
             OptionValues.Path(perRecordingCsv, "--per-recording");
             var names = Classifiers.Parse(classifierList);
             var perRecordingRows = new List<RecordingScoresCsv.Row>();
+            var realGateWindows = realPaths == null || realPaths.Length == 0 ? null
+                : GaitTraining.GateWindows.Of(GaitTraining.RealGateRecordings(Inputs.LoadRecordings(Inputs.Expand(realPaths, "*.csv"), false)));
             var poses = posePaths == null || posePaths.Length == 0 ? new List<Recording>() : Inputs.LoadRecordings(Inputs.Expand(posePaths, "*.csv"), false).Where(r => r.HasTruth).ToList();
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
@@ -91,7 +94,7 @@ namespace HeadGait.Cli
                     var augmented = GaitTraining.WithAugmentation(train, augment);
                     var foldModels = new GaitModels();
                     // Every classifier's walking gate, trained on the fold's training recordings as `headgait train` does.
-                    var gates = GaitTraining.TrainGates(augmented);
+                    var gates = GaitTraining.GatesFrom(GaitTraining.GateWindows.Of(GaitTraining.WithCalmCopies(augmented)), realGateWindows);
                     if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Threshold);
                     if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Correlation);
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));

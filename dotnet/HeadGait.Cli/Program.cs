@@ -42,6 +42,7 @@ namespace HeadGait.Cli
                 ClipsCommand.Build(),
                 StudyCommand.Build(),
                 AnimatorCheckCommand.Build(),
+                RealWorldCommand.Build(),
             };
             // The exit-code rule: 0 success, 1 a runtime or data error (a file that cannot be read, nothing to do), 2 usage (an
             // unknown command or option, a missing or bad option value). Never a stack trace.

@@ -39,10 +39,11 @@ namespace HeadGait.Cli
             var cvOnly = new Option<bool>("--cv-only") { Description = "train only the cross-validation fold models (--cv), leaving the model folder as it is" };
             var resume = new Option<bool>("--resume") { Description = "keep fold models an interrupted run finished for the same held-out recordings (same features and settings are assumed)" };
             var noStartStop = new Option<bool>("--no-start-stop") { Description = "leave out the BLSTM's copies of each walking recording made into a walk that starts and stops" };
+            var real = new Option<string[]>("--real") { Description = "unlabelled real recordings with '# activity=' headers (e.g. ../shared/data/glasses-train) that the walking gates also learn from: walking files where the signal keeps a step rhythm, standing, sitting and picking up as standing", AllowMultipleArgumentsPerToken = true };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
-                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, features, stride, lead, work, python, pythonArgs, exportOnly,
+                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, features, stride, lead, work, python, pythonArgs, exportOnly, real,
             };
             command.SetAction(parse =>
             {
@@ -64,15 +65,19 @@ namespace HeadGait.Cli
                 Console.WriteLine($"{recordings.Count} labelled recordings, {training.Count - recordings.Count} augmented copies; phase map {map.Serialize()}");
                 bool onlyFolds = parse.GetValue(cvOnly);
                 if (onlyFolds && schemeList.Count == 0) throw new UsageException("--cv-only needs --cv");
-                var gates = onlyFolds ? default : GaitTraining.TrainGates(training);
+                var realPaths = parse.GetValue(real);
+                var realRecordings = realPaths == null || realPaths.Length == 0 ? null : Inputs.LoadRecordings(Inputs.Expand(realPaths, "*.csv"), false);
+                var gates = onlyFolds ? default : GaitTraining.TrainGates(training, realRecordings);
                 if (!onlyFolds)
                 {
                     var thr = GaitTraining.TrainThreshold(training, map, gates.Threshold);
                     thr.Save(Path.Combine(outDir, GaitModels.ThresholdFile));
                     Console.WriteLine("walking gates: log-odds weights on the log spread of SMV, vertical, lateral and forward acceleration, of SMV change, the mean vertical over g, SMV's autocorrelation half a step (0.25 s) apart over 1 s, then their pairwise products; bias");
-                    Console.WriteLine($"THR's walking gate (also fitted on {GaitTraining.CalmGateCopies} calm-swaying copies of each recording; {100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Threshold.Serialize()}");
+                    string passes = realRecordings == null ? $"{100 * WalkingGate.DetectorPass:F1} % of walking windows pass"
+                        : $"{100 * WalkingGate.DetectorPass:F1} % of walking windows or at most {100 * GaitTraining.RealStandingPass:F1} % of standing ones pass, whichever is stricter; also fitted on {realRecordings.Count} real recordings";
+                    Console.WriteLine($"THR's walking gate (also fitted on {GaitTraining.CalmGateCopies} calm-swaying copies of each recording; {passes}): {gates.Threshold.Serialize()}");
                     Console.WriteLine($"THR: floor {thr.Floor:F2} m/s^2, {thr.PeakFraction:F2} of recent peaks, contact lag {1000 * thr.ContactLag:F0} ms, clock lead {1000 * thr.Clock.Lead:F0} ms, {1000 * thr.Clock.LeadPerLogBounce:+0.0;-0.0} ms per log unit of bounce from {thr.Clock.LeadReferenceBounce:F1} m/s^2");
-                    Console.WriteLine($"COR's walking gate (also fitted on the calm copies, spreads as they are; {100 * WalkingGate.DetectorPass:F1} % of walking windows pass): {gates.Correlation.Serialize()}");
+                    Console.WriteLine($"COR's walking gate (also fitted on the calm copies, spreads as they are; {passes}): {gates.Correlation.Serialize()}");
                     var cor = GaitTraining.TrainCorrelation(training, map, gates.Correlation);
                     cor.Save(Path.Combine(outDir, GaitModels.CorrelationFile));
                     Console.WriteLine($"COR: {cor.StepsUsed} steps in {cor.Templates.Count} templates (contact lags {string.Join(", ", cor.Templates.Select(t => $"{1000 * t.ContactLag:F0}"))} ms); r > {cor.MinCorrelation:F2}; clock lead {1000 * cor.ClockLead:F0} ms, {1000 * cor.LeadPerLogBounce:+0.0;-0.0} ms per log unit of bounce from {cor.LeadReferenceBounce:F1} m/s^2");

@@ -154,5 +154,50 @@ namespace HeadGait.Tests
             var gates = TestData.Gates;
             Assert.That(gates.Threshold.UsesStepRhythm && gates.Correlation.UsesStepRhythm && gates.Learned.UsesStepRhythm, Is.True);
         }
+
+        /// <summary>
+        /// A head that bumps twice per step of <paramref name="step"/> s (SMV's strongest line at twice the step rate, as
+        /// in slow glasses wearers; one foot's steps bump harder, so SMV repeats better half a step later than a step later),
+        /// sways sideways once per stride and surges forwards once per step.
+        /// </summary>
+        static Recording DoubleBumpWalk(double step, double seconds)
+        {
+            var rows = new List<RecordedSample>();
+            for (int i = 0; i < seconds * 100; i++)
+            {
+                double t = i * 0.01;
+                double bump = (int)Math.Floor(t / step) % 2 == 0 ? 2.0 : 1.4; // left steps bump harder than right ones
+                double up = 9.80665 + bump * Math.Cos(2 * Math.PI * 2 * t / step);
+                rows.Add(new RecordedSample(new ImuSample(t, 0.6 * Math.Cos(2 * Math.PI * t / step), 0.8 * Math.Sin(Math.PI * t / step), up)));
+            }
+            return new Recording("double bump", rows);
+        }
+
+        [Test]
+        public void TheStepPeriodIsWhereTheHeadSwaysBackNotTheSecondBump()
+        {
+            // SMV repeats best 0.4 s later; only at 0.8 s has the head swayed to the other side.
+            var rhythms = TestData.PerWindow(DoubleBumpWalk(0.8, 10), StepRhythm.HistorySamples, w => StepRhythm.Of(w));
+            var full = rhythms.FindAll(r => r.Period > 0);
+            Assert.That(full.Count, Is.GreaterThan(500));
+            Assert.That(MedianPeriod(full), Is.EqualTo(0.8).Within(0.03));
+            Assert.That(ShareWalking(full), Is.GreaterThan(0.9));
+            Assert.That(full.TrueForAll(r => r.ShowsStepPeriod), Is.True);
+        }
+
+        [Test]
+        public void ADetectorCountsOneStepPerStepOfTheRhythmNotEachBump()
+        {
+            // THR crosses its threshold at every bump, 0.4 s apart: without the rhythm its clock measures a 0.4-s period
+            // from the first interval and counts every bump as a step.
+            const double step = 0.8, seconds = 20;
+            var settings = new ThresholdSettings { Gate = WalkingGate.Open.WithStepRhythm() };
+            var thr = new ThresholdClassifier(settings);
+            int contacts = 0;
+            thr.ContactDetected += (t, e) => contacts++;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+            foreach (var s in DoubleBumpWalk(step, seconds).Samples) pre.Push(s.Imu, w => thr.Classify(w));
+            Assert.That(contacts, Is.InRange(seconds / step - 4, seconds / step + 2));
+        }
     }
 }

@@ -272,6 +272,7 @@ namespace HeadGait
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
             bool moving = template.Gate.Passes(window);
+            clock.FollowRhythm(window, template.Gate.LevelTolerance);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             if (settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows))

@@ -47,7 +47,7 @@ namespace HeadGait
             RecentSpread = recentSpread;
         }
 
-        /// <summary>The step period (s) where SMV repeats best; 0 when the window holds too little history.</summary>
+        /// <summary>The step period (s) where SMV repeats best while the lateral swings back most; 0 when the window holds too little history.</summary>
         public double Period { get; }
 
         /// <summary>SMV's autocorrelation at <see cref="Period"/>.</summary>
@@ -64,6 +64,16 @@ namespace HeadGait
 
         /// <summary>SMV's spread over the newest step over its spread over the whole window.</summary>
         public double RecentSpread { get; }
+
+        /// <summary>
+        /// Least SMV autocorrelation and most lateral autocorrelation at <see cref="Period"/> for the period to be trusted
+        /// as the step's (<see cref="ShowsStepPeriod"/>): looser than walking needs, since it only keeps a detector from
+        /// counting two bumps of one step as two steps.
+        /// </summary>
+        public const double PeriodBounce = 0.2, PeriodSway = -0.2;
+
+        /// <summary>Whether <see cref="Period"/> is clearly the step's: SMV repeats there while the head sways back.</summary>
+        public bool ShowsStepPeriod => Period > 0 && Bounce > PeriodBounce && Sway < PeriodSway;
 
         public bool IsWalking => Period > 0 && Bounce > MinBounce && Sway < MaxSway && Stride > MinStride && Forward > MinForward
             && RecentSpread >= MinRecentSpread;
@@ -103,24 +113,30 @@ namespace HeadGait
                 lateral[k] = y / d;
                 forward[k] = x / d;
             }
+            // The step is where SMV repeats while the head sways back to the other side. SMV alone also repeats at half a
+            // step in walkers whose head bumps twice per step (slow glasses wearers: their SMV's strongest line lies at
+            // twice the step rate), and there the lateral has not swung back yet.
             int best = shortest;
-            double bounce = double.NegativeInfinity;
+            double score = double.NegativeInfinity;
             for (int lag = shortest; lag <= longest; lag++)
             {
-                double r = Autocorrelation(smv, lag);
-                if (r > bounce)
+                double r = Autocorrelation(smv, lag) - Autocorrelation(lateral, lag);
+                if (r > score)
                 {
-                    bounce = r;
+                    score = r;
                     best = lag;
                 }
             }
+            double bounce = Autocorrelation(smv, best);
             double whole = Spread(smv);
             double recentSpread = whole > 1e-9 ? Spread(smv.Slice(n - best)) / whole : 0;
             return new StepRhythm(best / rate, bounce, Autocorrelation(lateral, best), Autocorrelation(lateral, 2 * best), Autocorrelation(forward, best), recentSpread);
         }
 
-        static double Spread(ReadOnlySpan<double> x)
+        /// <summary>Standard deviation (population); 0 for fewer than two values.</summary>
+        internal static double Spread(ReadOnlySpan<double> x)
         {
+            if (x.Length < 2) return 0;
             double m = 0, m2 = 0;
             foreach (var v in x)
             {
@@ -132,9 +148,10 @@ namespace HeadGait
         }
 
         /// <summary>Pearson correlation of the signal with itself <paramref name="lag"/> samples later (each part's own mean removed); 0 when flat.</summary>
-        static double Autocorrelation(ReadOnlySpan<double> x, int lag)
+        internal static double Autocorrelation(ReadOnlySpan<double> x, int lag)
         {
             int m = x.Length - lag;
+            if (m < 2) return 0;
             double ma = 0, mb = 0;
             for (int i = 0; i < m; i++)
             {

@@ -221,6 +221,7 @@ namespace HeadGait
                 }
             }
             bool moving = settings.Gate.Passes(window);
+            clock.FollowRhythm(window, settings.Gate.LevelTolerance);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks

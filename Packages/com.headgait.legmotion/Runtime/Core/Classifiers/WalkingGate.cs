@@ -298,29 +298,66 @@ namespace HeadGait
         /// the same recordings need the windows read and the regression solved once.
         /// </summary>
         public static WalkingGate[] TrainEach(IEnumerable<Recording> recordings, IReadOnlyList<double> walkingPasses, double? levelTolerance = null)
+            => FitEach(TrainingWindows.Of(recordings, levelTolerance), walkingPasses, levelTolerance);
+
+        /// <summary>
+        /// The regression's inputs of labelled windows (every 5th; walking = the newest sample is labelled walking; samples
+        /// without labels are left out), read once so that gates for several sets of recordings (cross-validation folds)
+        /// can be fitted from their union.
+        /// </summary>
+        public sealed class TrainingWindows
         {
-            var walking = new List<double[]>();
-            var standing = new List<double[]>();
-            foreach (var rec in recordings)
+            public readonly List<double[]> Walking = new List<double[]>();
+            public readonly List<double[]> Standing = new List<double[]>();
+
+            public static TrainingWindows Of(IEnumerable<Recording> recordings, double? levelTolerance = null)
             {
-                if (!rec.HasTruth) continue;
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = HistorySamples });
-                var labels = new LabelCursor(rec);
-                long count = 0;
-                foreach (var s in rec.Samples)
+                var windows = new TrainingWindows();
+                foreach (var rec in recordings)
                 {
-                    pre.Push(s.Imu, w =>
+                    if (!rec.HasTruth) continue;
+                    var pre = new StreamPreprocessor(new PreprocessorSettings { History = HistorySamples });
+                    var labels = new LabelCursor(rec);
+                    long count = 0;
+                    foreach (var s in rec.Samples)
                     {
-                        if (count++ % 5 != 0) return;
-                        if (!labels.TryLabelsAt(w.EndTime, out var truth)) return;
-                        var f = new double[FeatureCount];
-                        Features(w, f, levelTolerance);
-                        var x = new double[InputCount];
-                        FillInputs(f, x);
-                        (truth.Left == GaitPhase.Standing ? standing : walking).Add(x);
-                    });
+                        pre.Push(s.Imu, w =>
+                        {
+                            if (count++ % 5 != 0) return;
+                            if (!labels.TryLabelsAt(w.EndTime, out var truth)) return;
+                            var f = new double[FeatureCount];
+                            Features(w, f, levelTolerance);
+                            var x = new double[InputCount];
+                            FillInputs(f, x);
+                            (truth.Left == GaitPhase.Standing ? windows.Standing : windows.Walking).Add(x);
+                        });
+                    }
                 }
+                return windows;
             }
+
+            /// <summary>The windows of all <paramref name="parts"/> (the arrays are shared, not copied).</summary>
+            public static TrainingWindows Union(IEnumerable<TrainingWindows> parts)
+            {
+                var all = new TrainingWindows();
+                foreach (var p in parts)
+                {
+                    all.Walking.AddRange(p.Walking);
+                    all.Standing.AddRange(p.Standing);
+                }
+                return all;
+            }
+        }
+
+        /// <summary>
+        /// One gate per share in <paramref name="walkingPasses"/> from windows already read (<see cref="TrainingWindows"/>,
+        /// read with the same <paramref name="levelTolerance"/>).
+        /// </summary>
+        /// <param name="standingPass">At most this share of the standing windows may pass: where it is the stricter bound, it sets the bias.</param>
+        public static WalkingGate[] FitEach(TrainingWindows windows, IReadOnlyList<double> walkingPasses, double? levelTolerance = null, double standingPass = 1)
+        {
+            var walking = windows.Walking;
+            var standing = windows.Standing;
             if (walking.Count < 20 || standing.Count < 20)
                 throw new InvalidOperationException($"The walking gate needs walking and standing windows: found {walking.Count} and {standing.Count}.");
             var weights = Fit(walking, standing);
@@ -328,10 +365,15 @@ namespace HeadGait
             var scores = new List<double>();
             foreach (var x in walking) scores.Add(LogOdds(weights, x));
             scores.Sort();
+            var standingScores = new List<double>();
+            foreach (var x in standing) standingScores.Add(LogOdds(weights, x));
+            standingScores.Sort();
+            double standingBias = standingPass >= 1 ? double.PositiveInfinity
+                : -standingScores[(int)Math.Ceiling((1 - Math.Max(0, standingPass)) * (standingScores.Count - 1))];
             var gates = new WalkingGate[walkingPasses.Count];
             for (int g = 0; g < gates.Length; g++)
             {
-                weights[InputCount] = -scores[(int)Math.Floor((1 - walkingPasses[g]) * (scores.Count - 1))] + 1e-9;
+                weights[InputCount] = Math.Min(-scores[(int)Math.Floor((1 - walkingPasses[g]) * (scores.Count - 1))] + 1e-9, standingBias);
                 gates[g] = new WalkingGate(weights, levelTolerance); // copies the weights
             }
             return gates;

@@ -89,19 +89,89 @@ namespace HeadGait.Training
         /// rhythm (<see cref="StepRhythm"/>), so a calm, slow walker is not refused for moving as little as a gesture. Without standing to
         /// learn from, THR's and COR's gates are open and the learned classifiers' null (the models run ungated).
         /// </summary>
-        public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training)
+        public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) TrainGates(IReadOnlyList<Recording> training, IReadOnlyList<Recording> real = null)
+            => GatesFrom(GateWindows.Of(WithCalmCopies(training)), real == null ? null : GateWindows.Of(RealGateRecordings(real)));
+
+        /// <summary>
+        /// The gates from windows already read: <paramref name="labelled"/> (the labelled recordings with their calm copies)
+        /// and <paramref name="real"/> (unlabelled real recordings, <see cref="RealGateRecordings"/>; null: none), so that
+        /// cross-validation folds read each recording once.
+        /// </summary>
+        public static (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) GatesFrom(GateWindows labelled, GateWindows real = null)
         {
+            var all = real == null ? labelled : GateWindows.Union(new[] { labelled, real });
             try
             {
-                var withCalm = WithCalmCopies(training);
-                var calm = WalkingGate.TrainEach(withCalm, new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass }, WindowLevel.ToleranceDegrees);
-                var cor = WalkingGate.Train(withCalm, WalkingGate.DetectorPass);
-                return (calm[0].WithStepRhythm(), cor.WithStepRhythm(), calm[1].WithStepRhythm());
+                double standingPass = real == null ? 1 : RealStandingPass;
+                var levelled = WalkingGate.FitEach(all.Levelled, new[] { WalkingGate.DetectorPass, WalkingGate.LearnedPass }, WindowLevel.ToleranceDegrees, standingPass);
+                var cor = WalkingGate.FitEach(all.Plain, new[] { WalkingGate.DetectorPass }, null, standingPass)[0];
+                return (levelled[0].WithStepRhythm(), cor.WithStepRhythm(), levelled[1].WithStepRhythm());
             }
             catch (System.InvalidOperationException)
             {
                 return (WalkingGate.Open, WalkingGate.Open, null);
             }
+        }
+
+        /// <summary>
+        /// With real recordings to learn from, at most this share of all standing windows (the labelled recordings' and the
+        /// real still activities') may pass a gate: the real walkers are calmer than the actors, and passing
+        /// <see cref="WalkingGate.DetectorPass"/> of their walking as well let the real standing and picking up through.
+        /// </summary>
+        public const double RealStandingPass = 0.03;
+
+        /// <summary>The gates' training windows, read levelled (THR's and the learned classifiers' gates) and as they are (COR's).</summary>
+        public sealed class GateWindows
+        {
+            public WalkingGate.TrainingWindows Levelled, Plain;
+
+            public static GateWindows Of(IEnumerable<Recording> recordings)
+            {
+                var list = new List<Recording>(recordings);
+                return new GateWindows
+                {
+                    Levelled = WalkingGate.TrainingWindows.Of(list, WindowLevel.ToleranceDegrees),
+                    Plain = WalkingGate.TrainingWindows.Of(list),
+                };
+            }
+
+            public static GateWindows Union(IEnumerable<GateWindows> parts)
+            {
+                var list = new List<GateWindows>(parts);
+                return new GateWindows
+                {
+                    Levelled = WalkingGate.TrainingWindows.Union(list.ConvertAll(p => p.Levelled)),
+                    Plain = WalkingGate.TrainingWindows.Union(list.ConvertAll(p => p.Plain)),
+                };
+            }
+        }
+
+        /// <summary>
+        /// Unlabelled real recordings with an activity (<see cref="RealActivity"/>) as the walking gates can learn from them:
+        /// a walking file is labelled walking where the signal shows a walking rhythm (<see cref="RhythmReference"/>) and
+        /// left unlabelled elsewhere (turns, pauses: neither class is sure); standing, sitting with head movement and
+        /// picking things up are standing throughout; other activities (timed up-and-go) are left out. Only the walking /
+        /// standing distinction is labelled: the phases are placeholders, not to be trained on as phases.
+        /// </summary>
+        public static List<Recording> RealGateRecordings(IEnumerable<Recording> real)
+        {
+            var list = new List<Recording>();
+            foreach (var rec in real)
+            {
+                string activity = RealActivity.Of(rec);
+                bool still = RealActivity.IsStill(activity);
+                if (!still && activity != RealActivity.Walking) continue;
+                var reference = still ? null : RhythmReference.Of(rec);
+                var samples = new List<RecordedSample>(rec.Samples.Count);
+                foreach (var s in rec.Samples)
+                {
+                    if (still) samples.Add(new RecordedSample(s.Imu, GaitPhase.Standing, GaitPhase.Standing, s.Line));
+                    else if (reference.IsWalking(s.Imu.Time)) samples.Add(new RecordedSample(s.Imu, GaitPhase.MidStance, GaitPhase.MidSwing, s.Line));
+                    else samples.Add(new RecordedSample(s.Imu, s.Line));
+                }
+                list.Add(new Recording(rec.Name, samples));
+            }
+            return list;
         }
 
         /// <summary>The recordings followed by <see cref="CalmGateCopies"/> calm copies of each labelled original (not of augmented copies).</summary>
