@@ -39,10 +39,11 @@ namespace HeadGait.Cli
             var cvOnly = new Option<bool>("--cv-only") { Description = "train only the cross-validation fold models (--cv), leaving the model folder as it is" };
             var resume = new Option<bool>("--resume") { Description = "keep fold models an interrupted run finished for the same held-out recordings (same features and settings are assumed)" };
             var noStartStop = new Option<bool>("--no-start-stop") { Description = "leave out the BLSTM's copies of each walking recording made into a walk that starts and stops" };
+            var wearer = new Option<int>("--wearer-copies") { Description = "copies of each walking recording made slow and calm like a real headset wearer, for the learned classifiers", DefaultValueFactory = _ => GaitTraining.DefaultWearerCopies };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
-                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, features, stride, lead, work, python, pythonArgs, exportOnly,
+                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, wearer, features, stride, lead, work, python, pythonArgs, exportOnly,
             };
             command.SetAction(parse =>
             {
@@ -84,9 +85,10 @@ namespace HeadGait.Cli
                     Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name), StartsAndStops = startsAndStops,
                 };
                 var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
-                var items = training.Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
+                var wearerLike = GaitTraining.WearerCopies(recordings, parse.GetValue(wearer));
+                var items = training.Concat(wearerLike).Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), parse.GetValue(stride), workDir, parse.GetValue(lead));
-                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
+                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {wearerLike.Count} wearer-like copies, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
 
                 string script = FindScript();

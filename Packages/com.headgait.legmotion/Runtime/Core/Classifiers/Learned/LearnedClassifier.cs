@@ -164,7 +164,11 @@ namespace HeadGait
         {
             if (Gate == null) return GateVerdict.Passes;
             if (!Gate.Passes(window, out double logOdds)) return GateVerdict.Refuses;
-            return filter != null && logOdds >= filter.Settings.SureWalkingLogOdds ? GateVerdict.SurelyWalking : GateVerdict.Passes;
+            if (filter == null) return GateVerdict.Passes;
+            if (logOdds >= filter.Settings.SureWalkingLogOdds) return GateVerdict.SurelyWalking;
+            if (!filter.Settings.SureOnStepRhythm || !Gate.UsesStepRhythm) return GateVerdict.Passes;
+            // A pass without positive log-odds was the rhythm's; otherwise ask it.
+            return logOdds <= 0 || StepRhythm.Of(window, Gate.LevelTolerance).IsWalking ? GateVerdict.SurelyWalking : GateVerdict.Passes;
         }
 
         /// <summary>
@@ -187,12 +191,18 @@ namespace HeadGait
             ToProbabilities(scores, probabilities);
             if (gate == GateVerdict.Refuses)
             {
-                Array.Clear(probabilities, 0, probabilities.Length);
-                probabilities[Segments.StandingClass] = 1;
+                double keep = filter != null && WasWalking ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
+                for (int k = 0; k < probabilities.Length; k++)
+                {
+                    if (k == Segments.StandingClass) continue;
+                    probabilities[k] *= keep;
+                    walking += probabilities[k];
+                }
+                probabilities[Segments.StandingClass] = 1 - walking;
             }
-            else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
+            else if (filter != null && WasWalking)
             {
-                probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
+                probabilities[Segments.StandingClass] *= gate == GateVerdict.SurelyWalking ? filter.Settings.SureWalkingStandingWeight : filter.Settings.PassedStandingWeight;
                 double sum = 0;
                 for (int k = 0; k < probabilities.Length; k++) sum += probabilities[k];
                 if (sum > 0)

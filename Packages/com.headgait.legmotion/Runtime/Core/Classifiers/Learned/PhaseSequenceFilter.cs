@@ -42,6 +42,24 @@ namespace HeadGait
         /// </summary>
         public double SureWalkingLogOdds = 5;
 
+        /// <summary>
+        /// While walking, a window whose newest 2.5 s keep a walking rhythm (<see cref="StepRhythm"/>, when the gate listens
+        /// for one) counts as one the gate is sure of, however small its log-odds.
+        /// </summary>
+        public bool SureOnStepRhythm = false;
+
+        /// <summary>
+        /// While walking, weight of the model's standing probability in a window the gate passes without being sure of it
+        /// (1: as the model gives it).
+        /// </summary>
+        public double PassedStandingWeight = 1;
+
+        /// <summary>
+        /// While walking, a window the gate refuses keeps this share of the model's walking probabilities (the rest goes to
+        /// standing) instead of none, so the time filter, not one window, ends the walk. 0: a refusal is standing outright.
+        /// </summary>
+        public double RefusedWalkingShare = 0;
+
         /// <summary>Weight of the model's standing probability in a window the gate is sure of (see <see cref="SureWalkingLogOdds"/>).</summary>
         public double SureWalkingStandingWeight = 0.01;
     }
