@@ -25,6 +25,7 @@ namespace HeadGait
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
         double stepPeriod;
+        int refusedRun;
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -127,6 +128,7 @@ namespace HeadGait
             lastClass = -1;
             lastContactTime = double.NaN;
             stepPeriod = DefaultStepPeriod;
+            refusedRun = 0;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -189,9 +191,11 @@ namespace HeadGait
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate)
         {
             ToProbabilities(scores, probabilities);
+            refusedRun = gate == GateVerdict.Refuses ? refusedRun + 1 : 0;
             if (gate == GateVerdict.Refuses)
             {
-                double keep = filter != null && WasWalking ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
+                bool ridden = filter != null && WasWalking && refusedRun <= filter.Settings.RiddenRefusals;
+                double keep = ridden ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
                 for (int k = 0; k < probabilities.Length; k++)
                 {
                     if (k == Segments.StandingClass) continue;
