@@ -204,9 +204,9 @@ namespace HeadGait
                 }
                 probabilities[Segments.StandingClass] = 1 - walking;
             }
-            else if (filter != null && WasWalking)
+            else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
             {
-                probabilities[Segments.StandingClass] *= gate == GateVerdict.SurelyWalking ? filter.Settings.SureWalkingStandingWeight : filter.Settings.PassedStandingWeight;
+                probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
                 double sum = 0;
                 for (int k = 0; k < probabilities.Length; k++) sum += probabilities[k];
                 if (sum > 0)

@@ -53,12 +53,6 @@ namespace HeadGait
         public bool SureOnStepRhythm = true;
 
         /// <summary>
-        /// While walking, weight of the model's standing probability in a window the gate passes without being sure of it
-        /// (1: as the model gives it).
-        /// </summary>
-        public double PassedStandingWeight = 1;
-
-        /// <summary>
         /// While walking, a window the gate refuses keeps this share of the model's walking probabilities (the rest goes to
         /// standing) instead of none, so the time filter, not one window, ends the walk: the gate's refusals inside real slow
         /// walks come in runs of a few windows. 0: a refusal is standing outright.
