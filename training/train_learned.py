@@ -93,6 +93,33 @@ def write_model(path, values, tensors):
     os.replace(tmp, path)
 
 
+def read_model(path):
+    """A HeadGait model file (headgait-model v1): its values and tensors (float64 arrays)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    values, specs = {}, []
+    pos = 0
+    while True:
+        end = data.index(b"\n", pos)
+        line = data[pos:end].decode("utf-8")
+        pos = end + 1
+        if line == "end":
+            break
+        if line.startswith("tensor="):
+            name, dt, shape = line[len("tensor="):].split(" ")
+            specs.append((name, dt, tuple(int(d) for d in shape.split("x"))))
+        elif "=" in line:
+            k, _, v = line.partition("=")
+            values[k] = v
+    tensors = {}
+    for name, dt, shape in specs:
+        width = 8 if dt == "f64" else 4
+        count = int(np.prod(shape))
+        tensors[name] = np.frombuffer(data, dtype="<f8" if dt == "f64" else "<f4", count=count, offset=pos).reshape(shape).astype(np.float64)
+        pos += width * count
+    return values, tensors
+
+
 # ---------------------------------------------------------------- BLSTM
 
 def blstm_module(inputs, hidden, classes, dropout):
@@ -117,12 +144,28 @@ def blstm_module(inputs, hidden, classes, dropout):
     return Blstm()
 
 
-def train_blstm(X, y, mean, scale, classes, hidden, dropout, epochs, lr, batch, seed):
+def load_blstm_weights(model, tensors):
+    """Sets a module's weights from a HeadGait BLSTM file's tensors (its merged bias goes to bias_ih, bias_hh zero)."""
+    import torch
+    sd = model.state_dict()
+    t = lambda a: torch.tensor(a, dtype=torch.float32)
+    sd["lstm.weight_ih_l0"], sd["lstm.weight_ih_l0_reverse"] = t(tensors["lstm_w_ih"][0]), t(tensors["lstm_w_ih"][1])
+    sd["lstm.weight_hh_l0"], sd["lstm.weight_hh_l0_reverse"] = t(tensors["lstm_w_hh"][0]), t(tensors["lstm_w_hh"][1])
+    sd["lstm.bias_ih_l0"], sd["lstm.bias_ih_l0_reverse"] = t(tensors["lstm_b"][0]), t(tensors["lstm_b"][1])
+    sd["lstm.bias_hh_l0"] = torch.zeros_like(sd["lstm.bias_hh_l0"])
+    sd["lstm.bias_hh_l0_reverse"] = torch.zeros_like(sd["lstm.bias_hh_l0_reverse"])
+    sd["fc.weight"], sd["fc.bias"] = t(tensors["fc_w"]), t(tensors["fc_b"])
+    model.load_state_dict(sd)
+
+
+def train_blstm(X, y, mean, scale, classes, hidden, dropout, epochs, lr, batch, seed, init=None):
     import torch
     import torch.nn.functional as F
     torch.manual_seed(seed)
     np.random.seed(seed)
     model = blstm_module(X.shape[2], hidden, classes, dropout)
+    if init is not None:
+        load_blstm_weights(model, init)
     Xt = torch.tensor(((np.asarray(X, dtype=np.float32) - mean) / scale).astype(np.float32))
     yt = torch.tensor(y.astype(np.int64))
     opt = torch.optim.Adam(model.parameters(), lr=lr)
@@ -347,6 +390,10 @@ def main():
     ap.add_argument("--no-onnx", action="store_true")
     ap.add_argument("--evaluate", action="store_true",
                     help="also score the excluded recordings' windows (per-foot phase error of the classifier output, no animator): a quick check for grid searches")
+    ap.add_argument("--blstm-windows", type=int, default=0,
+                    help="train the BLSTM on this many windows drawn at random (0: all); with --init, a cheaper fine-tuning")
+    ap.add_argument("--init", default="",
+                    help="a BLSTM model file to start from (fine-tuning): its weights and its standardisation are kept; --epochs and --lr then set the fine-tuning")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--seed", type=int, default=SEED, help="seeds the SVM's window draw and the BLSTM's initialisation and batches")
     args = ap.parse_args()
@@ -381,10 +428,25 @@ def main():
         # The BLSTM also learns from walks made to start and stop; the SVM gained nothing at starts from them.
         X, y, mean, scale, Xs, provenance, ref_idx = training_set(True)
         T, C = X.shape[1], X.shape[2]
+        init, hidden, tuned = None, args.hidden, ""
+        if args.init:
+            values, init = read_model(args.init)
+            if values.get("kind") != "blstm" or values.get("features") != ds.features or values.get("classes") != ",".join(ds.classes):
+                raise SystemExit(f"{args.init}: not a BLSTM with this data set's features and classes; cannot fine-tune it")
+            # The network learned on its own standardisation; it keeps it.
+            mean, scale = init["input_mean"], init["input_scale"]
+            Xs = ((X - mean) / scale).astype(np.float32)
+            hidden = init["lstm_w_hh"].shape[2]
+            tuned = f" fine-tuned from {os.path.basename(args.init)} ({values.get('hyperparameters', '')})"
+        if 0 < args.blstm_windows < len(X):
+            pick = np.sort(np.random.default_rng(args.seed).choice(len(X), size=args.blstm_windows, replace=False))
+            X, y, Xs = X[pick], y[pick], Xs[pick]
+            provenance["trained_on"] += f", {len(X)} drawn"
+            ref_idx = np.random.default_rng(SEED).choice(len(X), size=min(64, len(X)), replace=False)
         t0 = time.time()
-        log(f"BLSTM: hidden {args.hidden}, dropout {args.dropout}, {args.epochs} epochs, lr {args.lr}, {len(X)} windows of {T}x{C}")
-        model = train_blstm(X, y, mean, scale, k, args.hidden, args.dropout, args.epochs, args.lr, args.batch, args.seed)
-        prov = dict(provenance, hyperparameters=f"hidden={args.hidden} dropout={args.dropout} epochs={args.epochs} lr={args.lr} batch={args.batch} adam onecycle")
+        log(f"BLSTM: hidden {hidden}, dropout {args.dropout}, {args.epochs} epochs, lr {args.lr}, {len(X)} windows of {T}x{C}{tuned}")
+        model = train_blstm(X, y, mean, scale, k, hidden, args.dropout, args.epochs, args.lr, args.batch, args.seed, init)
+        prov = dict(provenance, hyperparameters=f"hidden={hidden} dropout={args.dropout} epochs={args.epochs} lr={args.lr} batch={args.batch} adam onecycle{tuned}")
         path = os.path.join(args.out, "blstm.bytes")
         save_blstm(path, model, ds, mean, scale, prov)
         probs = blstm_probabilities(model, Xs[ref_idx])

@@ -40,14 +40,16 @@ namespace HeadGait.Cli
             var resume = new Option<bool>("--resume") { Description = "keep fold models an interrupted run finished for the same held-out recordings (same features and settings are assumed)" };
             var noStartStop = new Option<bool>("--no-start-stop") { Description = "leave out the BLSTM's copies of each walking recording made into a walk that starts and stops" };
             var real = new Option<string[]>("--real") { Description = "unlabelled real recordings with '# activity=' headers (e.g. ../shared/data/glasses-train) that the walking gates also learn from: walking files where the signal keeps a step rhythm, standing, sitting and picking up as standing", AllowMultipleArgumentsPerToken = true };
+            var wearer = new Option<int>("--wearer-copies") { Description = "copies of each walking recording made slow and calm like a real headset wearer, for the learned classifiers", DefaultValueFactory = _ => GaitTraining.DefaultWearerCopies };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
-                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, features, stride, lead, work, python, pythonArgs, exportOnly, real,
+                data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, wearer, features, stride, lead, work, python, pythonArgs, exportOnly, real,
             };
             command.SetAction(parse =>
             {
                 int copies = OptionValues.Count(parse.GetValue(augment), "--augment", 0, GaitTraining.MaxAugmentedCopies);
+                int wearerCopies = OptionValues.Count(parse.GetValue(wearer), "--wearer-copies", 0, GaitTraining.MaxAugmentedCopies);
                 int every = OptionValues.Count(parse.GetValue(stride), "--stride", 1, 1000);
                 double leadSeconds = OptionValues.Number(parse.GetValue(lead), "--label-lead", -1, 1);
                 var schemeList = parse.GetValue(cv) == null ? new List<string>() : OptionValues.Schemes(parse.GetValue(cv), "--cv", allowNone: false);
@@ -97,9 +99,10 @@ namespace HeadGait.Cli
                     Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name), StartsAndStops = startsAndStops,
                 };
                 var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
-                var items = training.Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
+                var wearerLike = GaitTraining.WearerCopies(recordings, wearerCopies);
+                var items = training.Concat(wearerLike).Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), every, workDir, leadSeconds);
-                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
+                Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {wearerLike.Count} wearer-like copies, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
 
                 string script = FindScript();

@@ -146,6 +146,44 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AShortRefusalOfTheGateInsideAWalkDoesNotEndIt()
+        {
+            // Confident walking scores throughout; the gate refuses 4 windows (40 ms) in the middle, as it does inside
+            // slow real walks. With the refusal as standing outright the walk broke there.
+            List<GaitPrediction> Shown(PhaseFilterSettings settings)
+            {
+                var blstm = new BlstmClassifier(GaitModels.Load(Models).Blstm, settings);
+                int n = blstm.Segments.Count, classes = blstm.Segments.ClassCount;
+                var scores = new double[300 * classes];
+                for (int i = 0; i < 300; i++)
+                {
+                    for (int c = 0; c < classes; c++) scores[i * classes + c] = 0.001 / (classes - 1);
+                    scores[i * classes + (int)(i / 110.0 * n) % n] = 0.999;
+                }
+                var shown = new List<GaitPrediction>();
+                for (int i = 0; i < 300; i++)
+                    shown.Add(blstm.ClassifyScored(scores, i, 0.01 * i, 100, i >= 200 && i < 204 ? GateVerdict.Refuses : GateVerdict.Passes));
+                return shown;
+            }
+            Assert.That(new PhaseFilterSettings().RefusedWalkingShare, Is.GreaterThan(0));
+            var ridden = Shown(new PhaseFilterSettings());
+            var broken = Shown(new PhaseFilterSettings { RefusedWalkingShare = 0 });
+            Assert.That(ridden.FindIndex(100, p => !p.IsWalking), Is.EqualTo(-1), "the walk rides out the refusal");
+            Assert.That(broken.GetRange(200, 4).Exists(p => !p.IsWalking), Is.True, "a refusal as standing outright ends it");
+            // A refusal that lasts still ends the walk, and no refusal starts one.
+            var blstm2 = new BlstmClassifier(GaitModels.Load(Models).Blstm);
+            int k = blstm2.Segments.ClassCount;
+            var walkingScores = new double[k];
+            walkingScores[0] = 1;
+            GaitPrediction last = default;
+            for (int i = 0; i < 200; i++) last = blstm2.ClassifyScored(walkingScores, 0, 0.01 * i, 100, GateVerdict.Passes);
+            Assert.That(last.IsWalking, Is.True);
+            for (int i = 200; i < 300; i++) last = blstm2.ClassifyScored(walkingScores, 0, 0.01 * i, 100, GateVerdict.Refuses);
+            Assert.That(last.IsWalking, Is.False, "a second of refusals ends the walk");
+            for (int i = 300; i < 400; i++) Assert.That(blstm2.ClassifyScored(walkingScores, 0, 0.01 * i, 100, GateVerdict.Refuses).IsWalking, Is.False, "refused while standing: standing");
+        }
+
+        [Test]
         public void TheGateVerdictFollowsItsLogOdds()
         {
             var rec = TestData.Eval("walk_straight");
@@ -155,12 +193,24 @@ namespace HeadGait.Tests
             foreach (var s in rec.Samples) pre.Push(s.Imu, w => verdicts.Add((blstm.JudgeGate(w), blstm.Gate.Score(w))));
             Assert.That(verdicts.Exists(v => v.verdict == GateVerdict.SurelyWalking), Is.True, "the generated walk has windows the gate is sure of");
             foreach (var (verdict, logOdds) in verdicts)
-            {
                 if (logOdds >= 5) Assert.That(verdict, Is.EqualTo(GateVerdict.SurelyWalking));
-                else if (logOdds > 0) Assert.That(verdict, Is.EqualTo(GateVerdict.Passes));
-                else Assert.That(verdict, Is.Not.EqualTo(GateVerdict.SurelyWalking));
-            }
-            var off = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SureWalkingLogOdds = double.PositiveInfinity });
+            // Below that, a window is sure exactly when its step rhythm says walking (the rhythm alone may pass it).
+            var rhythmOff = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SureOnStepRhythm = false });
+            pre.Reset();
+            int sureByRhythm = 0;
+            foreach (var s in rec.Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    double logOdds = blstm.Gate.Score(w);
+                    if (logOdds >= 5) return;
+                    bool rhythm = StepRhythm.Of(w, blstm.Gate.LevelTolerance).IsWalking;
+                    var verdict = blstm.JudgeGate(w);
+                    if (rhythm && verdict == GateVerdict.SurelyWalking) sureByRhythm++;
+                    Assert.That(verdict, Is.EqualTo(rhythm ? GateVerdict.SurelyWalking : logOdds > 0 ? GateVerdict.Passes : GateVerdict.Refuses));
+                    Assert.That(rhythmOff.JudgeGate(w), Is.EqualTo(logOdds > 0 ? GateVerdict.Passes : rhythm ? GateVerdict.Passes : GateVerdict.Refuses), "without the rhythm as sure");
+                });
+            Assert.That(sureByRhythm, Is.GreaterThan(0), "the generated walk has windows only its rhythm makes sure");
+            var off = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SureWalkingLogOdds = double.PositiveInfinity, SureOnStepRhythm = false });
             pre.Reset();
             foreach (var s in rec.Samples) pre.Push(s.Imu, w => Assert.That(off.JudgeGate(w), Is.Not.EqualTo(GateVerdict.SurelyWalking), "turned off"));
             blstm.Gate = null;

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Collections.Generic;
 using System.IO;
 using HeadGait.Synthetic;
@@ -377,6 +378,57 @@ namespace HeadGait.Tests
             Assert.That(forward / n - before / n, Is.EqualTo(9.81 * Math.Sin(pitch)).Within(1.0));
             Assert.That(lateral / n, Is.EqualTo(9.81 * Math.Cos(pitch) * Math.Sin(roll)).Within(0.5));
             Assert.That(up / n, Is.LessThan(9.81 * Math.Cos(pitch) + 0.5));
+        }
+
+        [Test]
+        public void AWearerLikeCopyWalksAtADrawnCadenceWithDrawnSwayAndKeepsItsSteps()
+        {
+            // The generated walk's walking part (a copy is made of walks only).
+            var whole = TestData.Eval("walk_straight");
+            var rec = new Recording(whole.Name, whole.Samples.Where(r => r.HasTruth && r.Left != GaitPhase.Standing && r.Right != GaitPhase.Standing).ToList());
+            Assert.That(rec.Samples.Count, Is.GreaterThan(500));
+            Assert.That(RecordingAugmentation.LikeWearer(whole, new DeterministicRandom(5)), Is.Null, "a recording that also stands keeps its own size");
+            var settings = new WearerSettings { MaxYawDegrees = 0 };
+            var random = new DeterministicRandom(5);
+            for (int copy = 0; copy < 4; copy++)
+            {
+                var wearer = RecordingAugmentation.LikeWearer(rec, random, settings);
+                Assert.That(RecordingAugmentation.IsCopy(wearer.Name) && RecordingAugmentation.OriginalName(wearer.Name) == rec.Name, Is.True, wearer.Name);
+                double Cadence(Recording r)
+                {
+                    var rows = RecordingAugmentation.Uniform(r);
+                    int contacts = 0, first = -1, last = -1;
+                    for (int i = 1; i < rows.Count; i++)
+                        if (GaitPhases.IsContact(rows[i - 1].Left, rows[i].Left) || GaitPhases.IsContact(rows[i - 1].Right, rows[i].Right))
+                        {
+                            contacts++;
+                            if (first < 0) first = i;
+                            last = i;
+                        }
+                    return 6000.0 * (contacts - 1) / (last - first);
+                }
+                double cadence = Cadence(wearer), own = Cadence(rec);
+                Assert.That(cadence, Is.InRange(Math.Max(settings.MinCadence, own / settings.MaxStretch) - 1.5, Math.Min(settings.MaxCadence, own / settings.MinStretch) + 1.5));
+                // The dynamic part (minus a 1 s moving average) of each axis has the drawn size, within the draw's range.
+                var rows2 = RecordingAugmentation.Uniform(wearer);
+                double[] min = { settings.MinForward, settings.MinLateral, settings.MinVertical }, max = { settings.MaxForward, settings.MaxLateral, settings.MaxVertical };
+                for (int k = 0; k < 3; k++)
+                {
+                    var v = rows2.Select(r => k == 0 ? r.Imu.X : k == 1 ? r.Imu.Y : r.Imu.Z).ToArray();
+                    double sum = 0;
+                    int count = 0;
+                    for (int i = 50; i < v.Length - 50; i++, count++)
+                    {
+                        double mean = 0;
+                        for (int j = i - 50; j <= i + 50; j++) mean += v[j];
+                        mean /= 101;
+                        sum += (v[i] - mean) * (v[i] - mean);
+                    }
+                    Assert.That(Math.Sqrt(sum / count), Is.InRange(0.7 * min[k], 1.2 * max[k]), $"axis {k}");
+                }
+            }
+            var standing = new Recording("still", Enumerable.Range(0, 300).Select(i => new RecordedSample(new ImuSample(i / 100.0, 0, 0, 9.81), GaitPhase.Standing, GaitPhase.Standing)).ToList());
+            Assert.That(RecordingAugmentation.LikeWearer(standing, random), Is.Null, "standing keeps its own size");
         }
 
         [Test]

@@ -80,6 +80,35 @@ namespace HeadGait.Training
             return list;
         }
 
+        /// <summary>Seeds the wearer-like copies (with each recording's name).</summary>
+        const ulong WearerSeed = 13;
+
+        /// <summary>Copies of each walking recording made wearer-like (<see cref="WearerCopies"/>) for the learned classifiers' training windows.</summary>
+        public const int DefaultWearerCopies = 2;
+
+        /// <summary>
+        /// <paramref name="copies"/> copies of each original walking recording as a slow, calm wearer of a real head-worn
+        /// sensor might give it (<see cref="RecordingAugmentation.LikeWearer"/>), for the learned classifiers' training windows
+        /// only: the actors walk faster and sway twice as much as people in a headset, and the networks otherwise take such
+        /// people for standing.
+        /// </summary>
+        public static List<Recording> WearerCopies(IReadOnlyList<Recording> recordings, int copies = DefaultWearerCopies, WearerSettings settings = null)
+        {
+            var list = new List<Recording>();
+            foreach (var rec in recordings)
+            {
+                if (!rec.HasTruth || RecordingAugmentation.IsCopy(rec.Name)) continue;
+                var random = new DeterministicRandom(WearerSeed ^ DeterministicRandom.SeedFrom(rec.Name));
+                for (int k = 0; k < copies; k++)
+                {
+                    var copy = RecordingAugmentation.LikeWearer(rec, random, settings);
+                    if (copy == null) break;
+                    list.Add(copy);
+                }
+            }
+            return list;
+        }
+
         /// <summary>
         /// Each classifier's walking gate: THR's and COR's let <see cref="WalkingGate.DetectorPass"/> of the walking windows
         /// through, the SVM's and BLSTM's <see cref="WalkingGate.LearnedPass"/> (they have a standing class of their own);

@@ -32,6 +32,7 @@ namespace HeadGait
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
         double stepPeriod;
+        int refusedRun;
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -155,6 +156,7 @@ namespace HeadGait
             lastClass = -1;
             lastContactTime = double.NaN;
             stepPeriod = DefaultStepPeriod;
+            refusedRun = 0;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -192,7 +194,11 @@ namespace HeadGait
         {
             if (Gate == null) return GateVerdict.Passes;
             if (!Gate.Passes(window, out double logOdds)) return GateVerdict.Refuses;
-            return filter != null && logOdds >= filter.Settings.SureWalkingLogOdds ? GateVerdict.SurelyWalking : GateVerdict.Passes;
+            if (filter == null) return GateVerdict.Passes;
+            if (logOdds >= filter.Settings.SureWalkingLogOdds) return GateVerdict.SurelyWalking;
+            if (!filter.Settings.SureOnStepRhythm || !Gate.UsesStepRhythm) return GateVerdict.Passes;
+            // A pass without positive log-odds was the rhythm's; otherwise ask it.
+            return logOdds <= 0 || StepRhythm.Of(window, Gate.LevelTolerance).IsWalking ? GateVerdict.SurelyWalking : GateVerdict.Passes;
         }
 
         /// <summary>
@@ -213,10 +219,18 @@ namespace HeadGait
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate)
         {
             ToProbabilities(scores, probabilities);
+            refusedRun = gate == GateVerdict.Refuses ? refusedRun + 1 : 0;
             if (gate == GateVerdict.Refuses)
             {
-                Array.Clear(probabilities, 0, probabilities.Length);
-                probabilities[Segments.StandingClass] = 1;
+                bool ridden = filter != null && WasWalking && refusedRun <= filter.Settings.RiddenRefusals;
+                double keep = ridden ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
+                for (int k = 0; k < probabilities.Length; k++)
+                {
+                    if (k == Segments.StandingClass) continue;
+                    probabilities[k] *= keep;
+                    walking += probabilities[k];
+                }
+                probabilities[Segments.StandingClass] = 1 - walking;
             }
             else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
             {
