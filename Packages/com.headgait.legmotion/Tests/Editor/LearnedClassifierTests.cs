@@ -26,8 +26,10 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
-        /// The SVM sums its 5,828 kernel products in float32, as its ONNX export does: its decision values stay within 1e-3 of
-        /// LIBSVM's double ones (ONNX Runtime's own float32 export differs from the C# by up to about 6e-3) and every vote is cast alike.
+        /// The SVM sums its kernel products in float32, as its ONNX export does: its decision values stay within 1e-3 of
+        /// LIBSVM's double ones per 5,828 support vectors (the bound set on the model that had 5,828; a float32 sum's rounding
+        /// error grows with its number of terms; ONNX Runtime's own float32 export differs from the C# by up to about 6e-3)
+        /// and every vote is cast alike (a differing vote makes the difference infinite).
         /// </summary>
         [Test]
         public void SvmDecisionValuesStayWithinFloatPrecisionOfTheFrameworks()
@@ -35,8 +37,9 @@ namespace HeadGait.Tests
             var model = ModelFile.Load(ModelPath(GaitModels.SvmFile));
             var reference = ModelFile.Load(ReferenceCheck.ReferencePath(ModelPath(GaitModels.SvmFile)));
             double diff = ReferenceCheck.MaxDecisionDifference(model, reference);
-            TestContext.WriteLine($"largest decision value difference {diff:G3}");
-            Assert.That(diff, Is.LessThanOrEqualTo(1e-3));
+            int supportVectors = model.ShapeOf("support_vectors")[0];
+            TestContext.WriteLine($"largest decision value difference {diff:G3} over {supportVectors} support vectors");
+            Assert.That(diff, Is.LessThanOrEqualTo(1e-3 * supportVectors / 5828.0));
         }
 
         /// <summary>
