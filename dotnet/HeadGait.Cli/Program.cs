@@ -19,6 +19,7 @@ namespace HeadGait.Cli
                 UnityMetaCommand.Build(),
                 ClipsCommand.Build(),
                 StudyCommand.Build(),
+                CalibrateCommand.Build(),
             };
             try
             {

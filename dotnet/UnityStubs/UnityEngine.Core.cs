@@ -50,6 +50,7 @@ namespace UnityEngine
     public static class Debug
     {
         public static void Log(object message) { }
+        public static void Log(object message, Object context) { }
         public static void LogWarning(object message, Object context) { }
         public static void LogError(object message, Object context) { }
     }
@@ -72,6 +73,8 @@ namespace UnityEngine
     public class Application
     {
         public static string dataPath => "Assets";
+        // Runtime/Export/Application/Application.bindings.cs
+        public static string persistentDataPath => System.IO.Path.GetTempPath();
     }
 
     // Runtime/Export/Graphics/GraphicsEnums.cs (decompiled builds also list Unknown = 0); LandscapeLeft is counter-clockwise from portrait.
