@@ -20,6 +20,7 @@ namespace HeadGait.Cli
                 ClipsCommand.Build(),
                 StudyCommand.Build(),
                 CalibrateCommand.Build(),
+                RealWorldCommand.Build(),
             };
             try
             {

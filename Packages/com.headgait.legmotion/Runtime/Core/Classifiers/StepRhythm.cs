@@ -119,8 +119,10 @@ namespace HeadGait
             return new StepRhythm(best / rate, bounce, Autocorrelation(lateral, best), Autocorrelation(lateral, 2 * best), Autocorrelation(forward, best), recentSpread);
         }
 
-        static double Spread(ReadOnlySpan<double> x)
+        /// <summary>Standard deviation (population); 0 for fewer than two values.</summary>
+        internal static double Spread(ReadOnlySpan<double> x)
         {
+            if (x.Length < 2) return 0;
             double m = 0, m2 = 0;
             foreach (var v in x)
             {
@@ -132,9 +134,10 @@ namespace HeadGait
         }
 
         /// <summary>Pearson correlation of the signal with itself <paramref name="lag"/> samples later (each part's own mean removed); 0 when flat.</summary>
-        static double Autocorrelation(ReadOnlySpan<double> x, int lag)
+        internal static double Autocorrelation(ReadOnlySpan<double> x, int lag)
         {
             int m = x.Length - lag;
+            if (m < 2) return 0;
             double ma = 0, mb = 0;
             for (int i = 0; i < m; i++)
             {

@@ -183,6 +183,10 @@ namespace HeadGait
 
         public int Count => t.Length;
 
+        /// <summary>The first and last valid sample's time (0 without samples).</summary>
+        public double StartTime => t.Length > 0 ? t[0] : 0;
+        public double EndTime => t.Length > 0 ? t[t.Length - 1] : 0;
+
         public double Smv(double time) => Interp(smv, time);
 
         public double Lateral(double time) => Interp(lat, time);

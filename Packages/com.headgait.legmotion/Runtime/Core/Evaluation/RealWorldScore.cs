@@ -1,0 +1,175 @@
+using System;
+using System.Collections.Generic;
+
+namespace HeadGait
+{
+    /// <summary>The activities of unlabelled real recordings (<c># activity=</c> in the header).</summary>
+    public static class RealActivity
+    {
+        public const string Walking = "walking";
+        public const string Standing = "standing";
+        public const string SittingHeadMovement = "sitting_head_movement";
+        public const string StandingPickup = "standing_pickup";
+        public const string TimedUpAndGo = "tug";
+
+        /// <summary>The recording's activity: its <c>activity</c> header, else the one its name ends with; "" when neither says.</summary>
+        public static string Of(Recording recording)
+        {
+            if (recording.Metadata.TryGetValue("activity", out var a) && a.Trim().Length > 0) return a.Trim().ToLowerInvariant();
+            foreach (var known in new[] { SittingHeadMovement, StandingPickup, Walking, Standing, TimedUpAndGo })
+                if (recording.Name.EndsWith(known, StringComparison.OrdinalIgnoreCase)) return known;
+            return "";
+        }
+
+        /// <summary>Who wore the sensor: the <c>subject</c> header, else the name up to its last <c>_e</c> part; else the name.</summary>
+        public static string PersonOf(Recording recording)
+        {
+            if (recording.Metadata.TryGetValue("subject", out var s) && s.Trim().Length > 0) return s.Trim();
+            int cut = recording.Name.LastIndexOf("_e", StringComparison.Ordinal);
+            return cut > 0 ? recording.Name.Substring(0, cut) : recording.Name;
+        }
+
+        /// <summary>Activities in which nobody walks: any walking shown there is wrong.</summary>
+        public static bool IsStill(string activity) => activity == Standing || activity == SittingHeadMovement || activity == StandingPickup;
+    }
+
+    /// <summary>
+    /// How one replay of an unlabelled real recording looks against the signal's own rhythm (<see cref="RhythmReference"/>):
+    /// what a wearer would see of their walking, step rate and feet, from the avatar's frames (and the classifier's
+    /// predictions for the walking share). Time is weighted by the frames' spacing (each frame holds until the next, at most
+    /// 0.1 s).
+    /// </summary>
+    public sealed class RealWorldScore
+    {
+        public string Recording;
+        public string Person;
+        public string Activity;
+        public string Classifier;
+
+        /// <summary>Time from the first frame to the last (s).</summary>
+        public double Seconds;
+        /// <summary>Time the signal shows walking (s).</summary>
+        public double ReferenceWalkingSeconds;
+        /// <summary>Of that, shown walking by the avatar (any state but Standing) and predicted walking by the classifier (s).</summary>
+        public double AvatarWalkingInReference, ClassifierWalkingInReference;
+        /// <summary>All time shown walking by the avatar and predicted walking by the classifier (s).</summary>
+        public double AvatarWalkingSeconds, ClassifierWalkingSeconds;
+        /// <summary>The avatar's foot contacts while the signal walks and the avatar walks, and the steps the signal's rate gives that time.</summary>
+        public int Contacts;
+        public double SignalSteps;
+        /// <summary>Consecutive contacts within one walking fragment (while the signal walks), and of them those by the other foot.</summary>
+        public int ConsecutiveContacts, AlternatingContacts;
+        /// <summary>Runs of the avatar walking (Standing between them).</summary>
+        public int Fragments;
+        /// <summary>The signal's walking bouts.</summary>
+        public int ReferenceBouts;
+        /// <summary>Per bout that starts from standing: how long after its first step the avatar walks (s; the bout's length when never).</summary>
+        public List<double> StartDelays = new List<double>();
+        /// <summary>The signal's median cadence (steps/min; NaN without walking).</summary>
+        public double SignalCadence = double.NaN;
+
+        /// <summary>Avatar's walking time per signal walking time; NaN without signal walking.</summary>
+        public double AvatarWalkingShare => ReferenceWalkingSeconds > 0 ? AvatarWalkingInReference / ReferenceWalkingSeconds : double.NaN;
+        public double ClassifierWalkingShare => ReferenceWalkingSeconds > 0 ? ClassifierWalkingInReference / ReferenceWalkingSeconds : double.NaN;
+        /// <summary>Steps shown per step the signal shows, over the time both walk; NaN under 10 signal steps.</summary>
+        public double CadenceRatio => SignalSteps >= 10 ? Contacts / SignalSteps : double.NaN;
+
+        /// <summary>
+        /// Scores the frames and predictions of a replay (same count, one per window, in time order) against the signal's
+        /// rhythm. Contacts are the avatar's feet entering stance from swing (<see cref="PhaseEvents.Contacts"/>).
+        /// </summary>
+        public static RealWorldScore Of(Recording recording, RhythmReference reference, string classifier,
+            IReadOnlyList<GaitPrediction> predictions, IReadOnlyList<AnimatorFrame> frames)
+        {
+            if (recording == null) throw new ArgumentNullException(nameof(recording));
+            if (reference == null) throw new ArgumentNullException(nameof(reference));
+            if (predictions.Count != frames.Count) throw new ArgumentException("One prediction per frame.");
+            var score = new RealWorldScore
+            {
+                Recording = recording.Name,
+                Person = RealActivity.PersonOf(recording),
+                Activity = RealActivity.Of(recording),
+                Classifier = classifier,
+                ReferenceBouts = reference.Bouts.Count,
+                SignalCadence = reference.MedianCadence,
+            };
+            int n = frames.Count;
+            if (n == 0) return score;
+            var times = new double[n];
+            var left = new GaitPhase[n];
+            var right = new GaitPhase[n];
+            var walkingRef = new bool[n];
+            bool wasWalking = false;
+            for (int i = 0; i < n; i++)
+            {
+                var f = frames[i];
+                times[i] = f.Time;
+                left[i] = f.Left;
+                right[i] = f.Right;
+                walkingRef[i] = reference.IsWalking(f.Time);
+                double dt = i + 1 < n ? Math.Min(0.1, Math.Max(0, frames[i + 1].Time - f.Time)) : 0;
+                bool avatar = f.State != LocomotionState.Standing;
+                bool clf = predictions[i].IsWalking;
+                score.Seconds += dt;
+                if (avatar) score.AvatarWalkingSeconds += dt;
+                if (clf) score.ClassifierWalkingSeconds += dt;
+                if (avatar && !wasWalking) score.Fragments++;
+                wasWalking = avatar;
+                if (!walkingRef[i]) continue;
+                score.ReferenceWalkingSeconds += dt;
+                if (avatar) score.AvatarWalkingInReference += dt;
+                if (clf) score.ClassifierWalkingInReference += dt;
+                double period = reference.StepPeriod(f.Time);
+                if (avatar && period > 0) score.SignalSteps += dt / period;
+            }
+
+            // Contacts while both walk; alternation between consecutive ones of the same fragment.
+            var contacts = PhaseEvents.Contacts(times, left, right);
+            var fragment = new int[n];
+            int current = 0;
+            for (int i = 0; i < n; i++)
+            {
+                if (frames[i].State != LocomotionState.Standing && (i == 0 || frames[i - 1].State == LocomotionState.Standing)) current++;
+                fragment[i] = frames[i].State == LocomotionState.Standing ? 0 : current;
+            }
+            int previousFragment = -1;
+            Foot previousFoot = Foot.Left;
+            int k = 0;
+            foreach (var c in contacts)
+            {
+                while (k + 1 < n && times[k + 1] <= c.Time) k++;
+                if (!walkingRef[k] || fragment[k] == 0) continue;
+                score.Contacts++;
+                if (fragment[k] == previousFragment)
+                {
+                    score.ConsecutiveContacts++;
+                    if (c.Foot != previousFoot) score.AlternatingContacts++;
+                }
+                previousFragment = fragment[k];
+                previousFoot = c.Foot;
+            }
+
+            // Late start: each bout that starts after at least a second without walking (or with the recording).
+            double first = frames[0].Time;
+            for (int b = 0; b < reference.Bouts.Count; b++)
+            {
+                var (start, end) = reference.Bouts[b];
+                double before = b > 0 ? reference.Bouts[b - 1].End : double.NegativeInfinity;
+                if (start - before < 1.0 || start < first) continue;
+                double delay = end - start;
+                for (int i = 0; i < n; i++)
+                {
+                    if (times[i] < start - 0.5) continue;
+                    if (times[i] >= end) break;
+                    if (frames[i].State != LocomotionState.Standing)
+                    {
+                        delay = Math.Max(0, times[i] - start);
+                        break;
+                    }
+                }
+                score.StartDelays.Add(delay);
+            }
+            return score;
+        }
+    }
+}

@@ -1,0 +1,158 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using HeadGait.Synthetic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>
+    /// The unlabelled real-recording measures (<see cref="RhythmReference"/>, <see cref="RealWorldScore"/>,
+    /// <see cref="RealWorldSummary"/>) on generated walks whose steps are known.
+    /// </summary>
+    public class RealWorldMetricTests
+    {
+        static Recording Walk(ulong seed, double stepFrequency, double seconds = 30, string activity = RealActivity.Walking)
+        {
+            var subject = GaitSubject.Random(seed);
+            subject.StepFrequency = stepFrequency;
+            var rec = WalkingStreamGenerator.Generate($"p{seed}_e1_{activity}", subject, new StreamScript().Stand(5).Walk(seconds, Foot.Left).Stand(5), seed);
+            rec.Metadata["activity"] = activity;
+            rec.Metadata["subject"] = $"p{seed}";
+            return rec;
+        }
+
+        /// <summary>Frames and predictions that show exactly the recording's labels, one per sample.</summary>
+        static (List<GaitPrediction> Predictions, List<AnimatorFrame> Frames) Perfect(Recording rec)
+        {
+            var p = new List<GaitPrediction>();
+            var f = new List<AnimatorFrame>();
+            foreach (var s in rec.Samples)
+            {
+                bool walking = s.Left != GaitPhase.Standing;
+                p.Add(walking ? GaitPrediction.Walking(s.Imu.Time, 0, 0.5, 1, s.Left, s.Right) : GaitPrediction.Standing(s.Imu.Time));
+                f.Add(new AnimatorFrame(s.Imu.Time, walking ? LocomotionState.Walking : LocomotionState.Standing, 0, s.Left, s.Right, walking ? 1 : 0, 0.5, false));
+            }
+            return (p, f);
+        }
+
+        /// <summary>Frames that walk wherever the labels walk but step <paramref name="stepsPerTrueStep"/> times per true step.</summary>
+        static (List<GaitPrediction> Predictions, List<AnimatorFrame> Frames) Stepping(Recording rec, double stepFrequency, double stepsPerTrueStep)
+        {
+            var p = new List<GaitPrediction>();
+            var f = new List<AnimatorFrame>();
+            var map = PhaseMap.Perry;
+            foreach (var s in rec.Samples)
+            {
+                double t = s.Imu.Time;
+                bool walking = s.Left != GaitPhase.Standing;
+                double stride = PhaseMap.Wrap(t * stepFrequency * stepsPerTrueStep / 2);
+                var l = walking ? map.PhaseAt(Foot.Left, stride) : GaitPhase.Standing;
+                var r = walking ? map.PhaseAt(Foot.Right, stride) : GaitPhase.Standing;
+                p.Add(walking ? GaitPrediction.Walking(t, stride, 0.5, 1, l, r) : GaitPrediction.Standing(t));
+                f.Add(new AnimatorFrame(t, walking ? LocomotionState.Walking : LocomotionState.Standing, stride, l, r, walking ? 1 : 0, 0.5, false));
+            }
+            return (p, f);
+        }
+
+        [TestCase(11UL, 1.4)]
+        [TestCase(12UL, 1.9)]
+        public void TheSignalsRhythmFindsTheGeneratedWalkAndItsCadence(ulong seed, double stepFrequency)
+        {
+            var rec = Walk(seed, stepFrequency);
+            var reference = RhythmReference.Of(rec);
+            var labelledWalking = rec.Samples.Where(s => s.Left != GaitPhase.Standing).Select(s => s.Imu.Time).ToList();
+            Assert.That(reference.Bouts.Count, Is.EqualTo(1), string.Join("; ", reference.Bouts));
+            var (start, end) = reference.Bouts[0];
+            Assert.That(start, Is.EqualTo(labelledWalking[0]).Within(0.3), "the bout starts with the first step");
+            // The head still decelerates after the closing contact: the bout may end up to a second later.
+            Assert.That(end, Is.InRange(labelledWalking[labelledWalking.Count - 1] - 0.5, labelledWalking[labelledWalking.Count - 1] + 1.0), "the bout ends with the last step");
+            Assert.That(reference.MedianCadence, Is.EqualTo(60 * stepFrequency).Within(0.04 * 60 * stepFrequency));
+        }
+
+        [Test]
+        public void AStandingStreamWithHeadMovementShowsNoWalking()
+        {
+            var rec = WalkingStreamGenerator.Generate("still", GaitSubject.Random(5), new StreamScript().Stand(60, headMovement: 2.5), 5);
+            var reference = RhythmReference.Of(rec);
+            Assert.That(reference.Bouts, Is.Empty);
+            Assert.That(reference.WalkingSeconds, Is.EqualTo(0));
+            var (p, f) = Perfect(rec);
+            var score = RealWorldScore.Of(rec, reference, "perfect", p, f);
+            Assert.That(score.AvatarWalkingSeconds, Is.EqualTo(0));
+            Assert.That(score.AvatarWalkingShare, Is.NaN);
+        }
+
+        [TestCase(11UL, 1.4)]
+        [TestCase(12UL, 1.9)]
+        public void APerfectPredictorShowsAllWalkingAtTheSignalsCadenceWithAlternatingFeet(ulong seed, double stepFrequency)
+        {
+            var rec = Walk(seed, stepFrequency);
+            var (p, f) = Perfect(rec);
+            var score = RealWorldScore.Of(rec, RhythmReference.Of(rec), "perfect", p, f);
+            Assert.That(score.AvatarWalkingShare, Is.GreaterThan(0.95));
+            Assert.That(score.CadenceRatio, Is.EqualTo(1).Within(0.05));
+            Assert.That((double)score.AlternatingContacts / score.ConsecutiveContacts, Is.GreaterThan(0.99));
+            Assert.That(score.Fragments, Is.EqualTo(1));
+            Assert.That(score.StartDelays, Has.Count.EqualTo(1));
+            Assert.That(score.StartDelays[0], Is.LessThan(0.6));
+        }
+
+        [TestCase(2.0)]
+        [TestCase(0.5)]
+        public void DoubledOrHalvedStepsShowInTheCadenceRatio(double stepsPerTrueStep)
+        {
+            const double frequency = 1.5;
+            var rec = Walk(13, frequency);
+            var (p, f) = Stepping(rec, frequency, stepsPerTrueStep);
+            var score = RealWorldScore.Of(rec, RhythmReference.Of(rec), "stepping", p, f);
+            Assert.That(score.CadenceRatio, Is.EqualTo(stepsPerTrueStep).Within(0.08 * stepsPerTrueStep));
+        }
+
+        [Test]
+        public void SameFootTwiceIsNotAlternating()
+        {
+            var rec = Walk(14, 1.6);
+            var (p, f) = Perfect(rec);
+            // The right foot never leaves the ground: every contact is the left's.
+            var limp = f.Select(x => new AnimatorFrame(x.Time, x.State, x.StridePosition, x.Left, x.State == LocomotionState.Standing ? GaitPhase.Standing : GaitPhase.MidStance, x.WalkWeight, x.StepPeriod, false)).ToList();
+            var score = RealWorldScore.Of(rec, RhythmReference.Of(rec), "limp", p, limp);
+            Assert.That(score.ConsecutiveContacts, Is.GreaterThan(10));
+            Assert.That(score.AlternatingContacts, Is.EqualTo(0));
+            Assert.That(score.CadenceRatio, Is.EqualTo(0.5).Within(0.05));
+        }
+
+        [Test]
+        public void TheSummaryPoolsWalkingFilesAndChargesStillFilesWithAllTheirWalking()
+        {
+            var walk = Walk(15, 1.5);
+            var still = WalkingStreamGenerator.Generate("p15_e2_standing", GaitSubject.Random(15), new StreamScript().Stand(20, headMovement: 1), 15);
+            still.Metadata["activity"] = RealActivity.Standing;
+            still.Metadata["subject"] = "p15";
+            var (wp, wf) = Perfect(walk);
+            // A predictor that walks through the first half of the standing file.
+            var sp = new List<GaitPrediction>();
+            var sf = new List<AnimatorFrame>();
+            double mid = still.Samples[still.Samples.Count / 2].Imu.Time;
+            foreach (var s in still.Samples)
+            {
+                bool walking = s.Imu.Time < mid;
+                sp.Add(walking ? GaitPrediction.Walking(s.Imu.Time, 0, 0.5, 1, GaitPhase.MidStance, GaitPhase.MidSwing) : GaitPrediction.Standing(s.Imu.Time));
+                sf.Add(new AnimatorFrame(s.Imu.Time, walking ? LocomotionState.Walking : LocomotionState.Standing, 0, walking ? GaitPhase.MidStance : GaitPhase.Standing, walking ? GaitPhase.MidSwing : GaitPhase.Standing, 1, 0.5, false));
+            }
+            var scores = new[]
+            {
+                RealWorldScore.Of(walk, RhythmReference.Of(walk), "x", wp, wf),
+                RealWorldScore.Of(still, RhythmReference.Of(still), "x", sp, sf),
+            };
+            var summary = RealWorldSummary.Of("x", scores);
+            Assert.That(summary.WalkingFiles, Is.EqualTo(1));
+            Assert.That(summary.People, Is.EqualTo(1));
+            Assert.That(summary.AvatarWalking, Is.GreaterThan(0.95));
+            Assert.That(summary.PersonWorstTenth, Is.EqualTo(summary.AvatarWalking));
+            Assert.That(summary.Still[RealActivity.Standing].Avatar, Is.EqualTo(0.5).Within(0.01));
+            Assert.That(summary.Still[RealActivity.Standing].Reference, Is.EqualTo(0));
+            Assert.That(summary.TugAvatar, Is.NaN);
+        }
+    }
+}
