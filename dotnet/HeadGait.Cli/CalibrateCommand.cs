@@ -22,6 +22,7 @@ namespace HeadGait.Cli
             command.Subcommands.Add(Reset());
             command.Subcommands.Add(Session());
             command.Subcommands.Add(Benchmark());
+            command.Subcommands.Add(Glasses());
             return command;
         }
 
@@ -85,6 +86,17 @@ namespace HeadGait.Cli
                 Console.WriteLine($"{parse.GetValue(output)}: {s.Head.Samples.Count} head samples, {s.LeftAnkle.Count} + {s.RightAnkle.Count} ankle poses");
                 return 0;
             });
+            return c;
+        }
+
+        static Command Glasses()
+        {
+            var data = new Option<string[]>("--data") { Description = "unlabelled real recordings with '# activity=' (e.g. ../shared/data/glasses-train)", Required = true, AllowMultipleArgumentsPerToken = true };
+            var models = ModelsOption();
+            var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a list or all", DefaultValueFactory = _ => "all" };
+            var seconds = new Option<double>("--seconds") { Description = "calibrate on this much of each person's walking file (s)", DefaultValueFactory = _ => 60 };
+            var c = new Command("glasses", "Calibrates each person (self-supervised) on the start of their walking file and replays the rest and their still activities with and without the profile.") { data, models, classifier, seconds };
+            c.SetAction(parse => CalibrationGlasses.Run(parse.GetValue(data), parse.GetValue(models), Classifiers.Parse(parse.GetValue(classifier)), parse.GetValue(seconds)));
             return c;
         }
 

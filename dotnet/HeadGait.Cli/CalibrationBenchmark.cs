@@ -65,7 +65,7 @@ namespace HeadGait.Cli
                 }
                 catch (InvalidOperationException e)
                 {
-                    notes.Add($"{fold.Name}: not fitted with the ankle trackers ({e.Message})");
+                    notes.Add($"{fold.Name}: not fitted with the ankle trackers, scored with the shipped models ({e.Message})");
                 }
                 double feetSeconds = watch.Elapsed.TotalSeconds;
                 var sure = WearerAdaptation.SelfLabel(models, session.Head);
@@ -77,12 +77,13 @@ namespace HeadGait.Cli
                 }
                 catch (InvalidOperationException e)
                 {
-                    notes.Add($"{fold.Name}: self-supervised not fitted ({e.Message})");
+                    notes.Add($"{fold.Name}: self-supervised not fitted, scored with the shipped models ({e.Message})");
                 }
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
                     "{0,-14} calibrated on {1} ({2:F1} s, {3} steps; ankle labels agree with the converter's on {4:F1} % of samples, contacts {5:F0} ms apart (median)); self-supervised {6} sure steps; fit {7:F1} s; fold training {8:F0} s",
                     fold.Name, calibration.Name, calibration.Duration, PhaseEvents.TruthSteps(labelled).Count, 100 * agreement, contactMs, sureSteps, feetSeconds, trainSeconds));
-                var variantModels = new[] { models, feet?.Apply(models), self?.Apply(models) };
+                // A walk that cannot be fitted leaves the wearer with the shipped models, as the product does.
+                var variantModels = new[] { models, feet?.Apply(models) ?? models, self?.Apply(models) ?? models };
                 // Each recording replayed by fresh classifiers; in parallel, as every replay is independent.
                 var scored = test.Where(r => r != calibration).AsParallel().AsOrdered().WithDegreeOfParallelism(Math.Max(1, Environment.ProcessorCount))
                     .Select(rec => (rec, metrics: names.SelectMany(clf => Enumerable.Range(0, Variants.Length).Select(v =>

@@ -220,6 +220,31 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void OneWalkingGateScoresAlikeOnParallelThreads()
+        {
+            // The calibration benchmark and the glasses check replay many recordings at once with classifiers made from one
+            // set of models, so they share its walking gates; scratch buffers per gate let parallel windows overwrite each
+            // other's features (the same recordings scored differently from run to run).
+            var gate = Shipped.Threshold.Gate;
+            var recordings = Enumerable.Range(0, 4).Select(k => WalkingStreamGenerator.Generate("r" + k, GaitSubject.Random(40UL + (ulong)k),
+                new StreamScript().Stand(1).Walk(6, Foot.Left).Stand(2, 1.0), 90UL + (ulong)k)).ToList();
+            List<double> Scores(Recording r)
+            {
+                var scores = new List<double>();
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = gate.History });
+                foreach (var x in r.Samples) pre.Push(x.Imu, w => scores.Add(gate.Score(w)));
+                return scores;
+            }
+            var sequential = recordings.Select(Scores).ToList();
+            int differing = 0;
+            System.Threading.Tasks.Parallel.For(0, 32, new System.Threading.Tasks.ParallelOptions { MaxDegreeOfParallelism = 8 }, i =>
+            {
+                if (!Scores(recordings[i % recordings.Count]).SequenceEqual(sequential[i % recordings.Count])) System.Threading.Interlocked.Increment(ref differing);
+            });
+            Assert.That(differing, Is.Zero);
+        }
+
+        [Test]
         public void SelfSupervisedLabelsComeFromStepsCorIsSureOf()
         {
             var walk = Walk(Wearer());
