@@ -199,25 +199,20 @@ namespace HeadGait.Mocap
             for (int k = 0; k < 3; k++) track[k] = new NaturalCubicSpline(grid, sensor[k]);
             var origin = new Vec3(sensor[0][0], sensor[1][0], sensor[2][0]);
             origin = origin - Vec3.Dot(origin, c.UpVec) * c.UpVec;
-            Vec3 Tracking(Vec3 v) => c.Tracking(v);
 
             var random = new DeterministicRandom((s.Seed != 0 ? s.Seed : DeterministicRandom.SeedFrom(bvh.Name)) ^ (ulong)(frameRate * 1000));
             var rows = new List<(PoseSample, GaitPhase, GaitPhase)>();
-            double start = s.TrimSeconds, end = (c.N - 1) * c.Dt - s.TrimSeconds, last = double.NegativeInfinity;
-            for (int k = 0; ; k++)
+            double start = s.TrimSeconds;
+            foreach (double t in JitteredFrames(c, s, frameRate, random))
             {
-                double t = start + k / frameRate + random.NextGaussian() * s.FrameJitterSd;
-                if (t > end) break;
-                if (t < start || t <= last + 1e-4) continue;
-                last = t;
                 var p = new Vec3(track[0].Value(t), track[1].Value(t), track[2].Value(t)) - origin;
-                var pos = Tracking(p) + new Vec3(random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd);
+                var pos = c.Tracking(p) + new Vec3(random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd);
                 var h = c.HeadFrameAt(t);
                 var forward = new Vec3(h.M00, h.M10, h.M20);
                 var left = new Vec3(h.M01, h.M11, h.M21);
                 var up = new Vec3(h.M02, h.M12, h.M22);
                 // Columns: the camera's right, up and forward axes in tracking space.
-                var rotation = Rotation3.FromColumns(Tracking(-1 * left), Tracking(up), Tracking(forward)) * SmallRotation(random, s.RotationNoiseDegrees);
+                var rotation = Rotation3.FromColumns(c.Tracking(-1 * left), c.Tracking(up), c.Tracking(forward)) * SmallRotation(random, s.RotationNoiseDegrees);
                 rotation.ToQuaternion(out double qx, out double qy, out double qz, out double qw);
                 int i = Math.Min(c.N - 1, (int)Math.Round(t / c.Dt));
                 rows.Add((new PoseSample(t - start, pos.X, pos.Y, pos.Z, qx, qy, qz, qw), c.LeftAt(i), c.RightAt(i)));
@@ -258,13 +253,9 @@ namespace HeadGait.Mocap
                     track[k] = new NaturalCubicSpline(c.FrameTimes, v);
                 }
                 var rows = new List<(PoseSample, GaitPhase, GaitPhase)>();
-                double start = s.TrimSeconds, end = (c.N - 1) * c.Dt - s.TrimSeconds, last = double.NegativeInfinity;
-                for (int k = 0; ; k++)
+                double start = s.TrimSeconds;
+                foreach (double t in JitteredFrames(c, s, frameRate, random))
                 {
-                    double t = start + k / frameRate + random.NextGaussian() * s.FrameJitterSd;
-                    if (t > end) break;
-                    if (t < start || t <= last + 1e-4) continue;
-                    last = t;
                     var p = c.Tracking(new Vec3(track[0].Value(t), track[1].Value(t), track[2].Value(t)) - origin)
                             + new Vec3(random.NextGaussian() * positionNoiseSd, random.NextGaussian() * positionNoiseSd, random.NextGaussian() * positionNoiseSd);
                     var r = HeadRotationAt(c.Pose, joint, t / c.FrameTime);
@@ -284,6 +275,20 @@ namespace HeadGait.Mocap
                 return rec;
             }
             return (One(c.LeftAnkle, "left"), One(c.RightAnkle, "right"));
+        }
+
+        /// <summary>A tracked device's frame times: <paramref name="frameRate"/> per second with frame-time jitter, increasing, within the trimmed clip.</summary>
+        static IEnumerable<double> JitteredFrames(Capture c, MocapSettings s, double frameRate, DeterministicRandom random)
+        {
+            double start = s.TrimSeconds, end = (c.N - 1) * c.Dt - s.TrimSeconds, last = double.NegativeInfinity;
+            for (int k = 0; ; k++)
+            {
+                double t = start + k / frameRate + random.NextGaussian() * s.FrameJitterSd;
+                if (t > end) yield break;
+                if (t < start || t <= last + 1e-4) continue;
+                last = t;
+                yield return t;
+            }
         }
 
         /// <summary>A rotation about a random axis by a normally distributed angle (degrees SD).</summary>
