@@ -129,17 +129,9 @@ namespace HeadGait.Cli
         /// <summary>Share of per-foot samples whose ankle-tracker label equals the converter's, and the median distance between their contacts (ms).</summary>
         static (double Agreement, double ContactMs) Agreement(Recording fromAnkles, Recording converted)
         {
-            var cursor = new LabelCursor(converted);
-            long same = 0, total = 0;
-            foreach (var s in fromAnkles.Samples)
-            {
-                if (!cursor.TryLabelsAt(s.Imu.Time, out var truth) || !truth.HasTruth) continue;
-                same += (s.Left == truth.Left ? 1 : 0) + (s.Right == truth.Right ? 1 : 0);
-                total += 2;
-            }
             var contacts = PhaseEvents.TruthContacts(converted);
             var offsets = PhaseEvents.TruthContacts(fromAnkles).Select(c => Math.Abs(PhaseEvents.OffsetFromNearest(contacts, c.Time)) * 1000).ToList();
-            return (total > 0 ? (double)same / total : double.NaN, offsets.Count > 0 ? GaitMetrics.Median(offsets) : double.NaN);
+            return (FootContactLabeller.Agreement(fromAnkles, converted), offsets.Count > 0 ? GaitMetrics.Median(offsets) : double.NaN);
         }
 
         static GaitModels FoldModels(Fold fold, List<Recording> train, int augment, string cache, List<string> names)

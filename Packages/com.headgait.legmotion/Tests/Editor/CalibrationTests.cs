@@ -31,19 +31,7 @@ namespace HeadGait.Tests
         static Recording Walk(GaitSubject wearer, ulong seed = 84)
             => WalkingStreamGenerator.Generate("calibration", wearer, new StreamScript().Stand(2).Walk(25, Foot.Left).Stand(1).Walk(25, Foot.Right, 40).Stand(3), seed);
 
-        /// <summary>Share of per-foot samples labelled alike.</summary>
-        static double Agreement(Recording a, Recording truth)
-        {
-            var cursor = new LabelCursor(truth);
-            long same = 0, total = 0;
-            foreach (var s in a.Samples)
-            {
-                if (!cursor.TryLabelsAt(s.Imu.Time, out var t) || !t.HasTruth) continue;
-                same += (s.Left == t.Left ? 1 : 0) + (s.Right == t.Right ? 1 : 0);
-                total += 2;
-            }
-            return (double)same / total;
-        }
+        static double Agreement(Recording a, Recording truth) => FootContactLabeller.Agreement(a, truth);
 
         [Test]
         public void AnkleTrackersLabelAGeneratedWalkersFeet()

@@ -70,6 +70,20 @@ namespace HeadGait.Calibration
             return labelled;
         }
 
+        /// <summary>Share of per-foot samples of <paramref name="labelled"/> whose label equals <paramref name="reference"/>'s at the same time (NaN when none compare).</summary>
+        public static double Agreement(Recording labelled, Recording reference)
+        {
+            var cursor = new LabelCursor(reference);
+            long same = 0, total = 0;
+            foreach (var s in labelled.Samples)
+            {
+                if (!s.HasTruth || !cursor.TryLabelsAt(s.Imu.Time, out var truth) || !truth.HasTruth) continue;
+                same += (s.Left == truth.Left ? 1 : 0) + (s.Right == truth.Right ? 1 : 0);
+                total += 2;
+            }
+            return total > 0 ? (double)same / total : double.NaN;
+        }
+
         /// <summary>Whether the foot is down at each of <paramref name="times"/>.</summary>
         static bool[] Contacts(IReadOnlyList<PoseSample> poses, double[] times, double rate, string name, double contactHeight, double contactSpeed, double toeOff)
         {
