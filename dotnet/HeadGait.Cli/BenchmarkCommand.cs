@@ -90,13 +90,7 @@ namespace HeadGait.Cli
                     var variantTests = variants.Select(v => test.Select(v.Make).Where(r => r != null).ToList()).ToList();
                     var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
                     if (train.Count == 0 || test.Count == 0) continue;
-                    var map = PhaseMapTraining.Learn(train);
-                    var augmented = GaitTraining.WithAugmentation(train, augment);
-                    var foldModels = new GaitModels();
-                    // Every classifier's walking gate, trained on the fold's training recordings as `headgait train` does.
-                    var gates = GaitTraining.GatesFrom(GaitTraining.GateWindows.Of(GaitTraining.WithCalmCopies(augmented)), realGateWindows);
-                    if (names.Contains("thr")) foldModels.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Threshold);
-                    if (names.Contains("cor")) foldModels.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Correlation);
+                    var (foldModels, gates, map) = TrainFold(train, augment, names.Contains("thr"), names.Contains("cor"), realGateWindows);
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
                     foldModels.Svm = learned?.Svm;
@@ -177,6 +171,21 @@ namespace HeadGait.Cli
             Console.WriteLine();
             PrintCost(folder, names, recordings);
             return 0;
+        }
+
+        /// <summary>THR and COR (as asked) trained on a fold's training recordings as `headgait train` does, with every classifier's walking gate and the phase map.</summary>
+        /// <summary>THR and COR trained on a fold's recordings as `headgait train` does, every classifier's walking gate with them
+        /// (also on <paramref name="realGateWindows"/>, unlabelled real recordings' windows, where given).</summary>
+        internal static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) TrainFold(
+            List<Recording> train, int augment, bool thr, bool cor, GaitTraining.GateWindows realGateWindows = null)
+        {
+            var map = PhaseMapTraining.Learn(train);
+            var augmented = GaitTraining.WithAugmentation(train, augment);
+            var models = new GaitModels();
+            var gates = GaitTraining.GatesFrom(GaitTraining.GateWindows.Of(GaitTraining.WithCalmCopies(augmented)), realGateWindows);
+            if (thr) models.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Threshold);
+            if (cor) models.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Correlation);
+            return (models, gates, map);
         }
 
         /// <summary>A learned classifier with the fold's own gate and stance slope (fold models may predate them or hold ones from other data).</summary>

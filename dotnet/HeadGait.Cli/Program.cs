@@ -42,6 +42,7 @@ namespace HeadGait.Cli
                 ClipsCommand.Build(),
                 StudyCommand.Build(),
                 AnimatorCheckCommand.Build(),
+                CalibrateCommand.Build(),
                 RealWorldCommand.Build(),
             };
             // The exit-code rule: 0 success, 1 a runtime or data error (a file that cannot be read, nothing to do), 2 usage (an

@@ -250,6 +250,12 @@ namespace UnityEngine
         }
     }
 
+    // Modules/TextRendering/TextRendering.bindings.cs: a world-space text (built-in module, no UI package needed).
+    public sealed class TextMesh : Component
+    {
+        public string text { get; set; }
+    }
+
     public sealed class RectTransform : Transform
     {
         public Vector2 anchorMin { get; set; }

@@ -25,8 +25,23 @@ namespace HeadGait.Unity
     /// </summary>
     public static class GaitClassifierBuilder
     {
+        /// <param name="profile">A wearer's calibration (<see cref="HeadGait.Calibration.WearerProfile"/>): the classifier is made from
+        /// the models it adapts; null: the shipped models as they are.</param>
         public static IGaitClassifier Build(GaitClassifierKind kind, ModelAsset threshold, ModelAsset correlation, ModelAsset svm,
-            ModelAsset blstm, out string error, out string warning)
+            ModelAsset blstm, out string error, out string warning, HeadGait.Calibration.WearerProfile profile = null)
+        {
+            var models = Read(kind, threshold, correlation, svm, blstm, out error);
+            if (profile != null) models = profile.Apply(models);
+            var classifier = models.Create(Name(kind), out warning);
+            if (kind == GaitClassifierKind.Threshold && threshold == null) warning = null;
+            return classifier;
+        }
+
+        /// <summary>
+        /// The models the classifier of <paramref name="kind"/> is made from (and its fallbacks'), read from the assets;
+        /// <paramref name="error"/> names each asset that is missing or unusable, null when none is.
+        /// </summary>
+        public static GaitModels Read(GaitClassifierKind kind, ModelAsset threshold, ModelAsset correlation, ModelAsset svm, ModelAsset blstm, out string error)
         {
             var models = new GaitModels();
             var errors = new List<string>();
@@ -41,11 +56,8 @@ namespace HeadGait.Unity
                 models.Correlation = Read(correlation, "COR template", a => GaitModels.Checked(CorrelationTemplate.Parse(a.Text, a.Name), t => new CorrelationClassifier(t), a.Name), learned ? null : errors);
             // THR runs on its defaults without a settings file: a missing one is no problem, a broken one is.
             models.Threshold = threshold == null ? null : Read(threshold, "THR settings", a => GaitModels.Checked(ThresholdSettings.Parse(a.Text, a.Name), t => new ThresholdClassifier(t), a.Name), errors);
-
-            var classifier = models.Create(Name(kind), out warning);
-            if (kind == GaitClassifierKind.Threshold && threshold == null) warning = null;
             error = errors.Count == 0 ? null : string.Join("\n", errors);
-            return classifier;
+            return models;
         }
 
         static string Name(GaitClassifierKind kind)

@@ -62,6 +62,25 @@ namespace HeadGait.Unity
         /// <summary>Raised on the frame the locomotion state changes (old, new).</summary>
         public event Action<LocomotionState, LocomotionState> StateChanged;
 
+        /// <summary>Raised for every sample <see cref="Push"/> hands over (a calibration walk records them).</summary>
+        public event Action<ImuSample> SamplePushed;
+
+        /// <summary>The wearer's calibration the classifier is made with (<see cref="ApplyProfile"/>); null: the shipped models.</summary>
+        public HeadGait.Calibration.WearerProfile Profile { get; private set; }
+
+        /// <summary>Makes the classifier again with a wearer's calibration (null: the shipped models again).</summary>
+        public void ApplyProfile(HeadGait.Calibration.WearerProfile profile)
+        {
+            Profile = profile;
+            Build();
+        }
+
+        /// <summary>The shipped models this component's classifier is made from (what a calibration walk adapts); <paramref name="error"/> as <see cref="GaitClassifierBuilder.Read"/>.</summary>
+        public GaitModels ReadModels(out string error)
+            => GaitClassifierBuilder.Read(classifier, Text(thrSettings), Text(corTemplate),
+                classifier == GaitClassifierKind.Svm ? Binary(svmModel) : null,
+                classifier == GaitClassifierKind.Blstm ? Binary(blstmModel) : null, out error);
+
         /// <summary>Raised after <see cref="Build"/> made a new classifier (an evaluator set before is gone with the old one).</summary>
         public event Action Rebuilt;
 
@@ -107,7 +126,7 @@ namespace HeadGait.Unity
             var c = GaitClassifierBuilder.Build(classifier, Text(thrSettings), Text(corTemplate),
                 classifier == GaitClassifierKind.Svm ? Binary(svmModel) : null,
                 classifier == GaitClassifierKind.Blstm ? Binary(blstmModel) : null,
-                out string error, out string warning);
+                out string error, out string warning, Profile);
             if (error != null) Debug.LogError($"HeadGait: {error}", this);
             if (warning != null) Debug.LogWarning($"HeadGait: {warning}.", this);
             var settings = new AnimatorSettings
@@ -147,7 +166,11 @@ namespace HeadGait.Unity
         /// <returns>Accepted when handed over to the next batch (the pipeline's own verdict is counted in
         /// <c>Pipeline.Preprocessor</c>); SkippedNotFinite for NaN or infinite values.</returns>
         public SampleOutcome Push(double time, Vector3 headFrameSpecificForce)
-            => Runner.Push(new ImuSample(time, headFrameSpecificForce.x, headFrameSpecificForce.y, headFrameSpecificForce.z));
+        {
+            var sample = new ImuSample(time, headFrameSpecificForce.x, headFrameSpecificForce.y, headFrameSpecificForce.z);
+            SamplePushed?.Invoke(sample);
+            return Runner.Push(sample);
+        }
 
         void Update()
         {

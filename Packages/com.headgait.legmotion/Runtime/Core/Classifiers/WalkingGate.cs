@@ -53,8 +53,9 @@ namespace HeadGait
         readonly double[] weights; // InputCount weights, then the bias
         readonly double? levelTolerance;
         readonly bool usesStepRhythm;
-        readonly double[] features = new double[FeatureCount];
-        readonly double[] inputs = new double[InputCount];
+        // Scratch per thread, not per gate: one gate is shared by every classifier made from the same model, and those
+        // may run on several threads at once (parallel replays); per-gate buffers let their windows overwrite each other.
+        [ThreadStatic] static double[] features, inputs;
 
         /// <param name="levelTolerance">Tilt (degrees) beyond which the spreads are read from a levelled window (<see cref="Features"/>); null: as the head frame gives them.</param>
         /// <param name="usesStepRhythm">Also pass a window that keeps a walking rhythm (<see cref="HeadGait.StepRhythm"/>) whatever its score.</param>
@@ -92,6 +93,8 @@ namespace HeadGait
         /// <summary>Log-odds that the window's newest 0.5 s is walking; positive passes.</summary>
         public double Score(SignalWindow window)
         {
+            var features = WalkingGate.features ?? (WalkingGate.features = new double[FeatureCount]);
+            var inputs = WalkingGate.inputs ?? (WalkingGate.inputs = new double[InputCount]);
             Features(window, features, levelTolerance);
             FillInputs(features, inputs);
             return LogOdds(weights, inputs);

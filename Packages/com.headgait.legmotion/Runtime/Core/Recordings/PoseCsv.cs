@@ -95,18 +95,18 @@ namespace HeadGait
             }
         }
 
-        /// <summary>Writes a pose recording (whole or not at all: see <see cref="AtomicFile"/>).</summary>
-        public static void Save(PoseRecording recording, string path) => AtomicFile.WriteText(path, w =>
+        /// <summary>Writes a pose recording (whole or not at all: see <see cref="AtomicFile"/>); without <paramref name="labels"/> the phase columns are left out (a device's own pose, e.g. an ankle tracker's).</summary>
+        public static void Save(PoseRecording recording, string path, bool labels = true) => AtomicFile.WriteText(path, w =>
         {
             w.WriteLine(Magic);
             foreach (var kv in recording.Metadata) w.WriteLine($"# {kv.Key}={kv.Value}");
-            w.WriteLine(string.Join(",", RequiredColumns) + ",phase_left,phase_right");
+            w.WriteLine(string.Join(",", RequiredColumns) + (labels ? ",phase_left,phase_right" : ""));
             var ci = CultureInfo.InvariantCulture;
             foreach (var (p, left, right) in recording.Rows)
             {
                 w.WriteLine(string.Join(",", p.Time.ToString("F5", ci), p.Px.ToString("F5", ci), p.Py.ToString("F5", ci), p.Pz.ToString("F5", ci),
-                    p.Qx.ToString("F6", ci), p.Qy.ToString("F6", ci), p.Qz.ToString("F6", ci), p.Qw.ToString("F6", ci),
-                    GaitPhases.ShortName(left), GaitPhases.ShortName(right)));
+                    p.Qx.ToString("F6", ci), p.Qy.ToString("F6", ci), p.Qz.ToString("F6", ci), p.Qw.ToString("F6", ci))
+                    + (labels ? "," + GaitPhases.ShortName(left) + "," + GaitPhases.ShortName(right) : ""));
             }
         });
 

@@ -259,7 +259,7 @@ namespace HeadGait.Training
         /// The median, not the mean: the few steps matched far off at the starts of walks moved the mean by up to 12 ms
         /// between otherwise equal COR settings, and 10 ms of clock lead is worth several points of misclassification.
         /// </summary>
-        static double ContactTiming(System.Func<IGaitClassifier> make, IReadOnlyList<Recording> training)
+        internal static double ContactTiming(System.Func<IGaitClassifier> make, IReadOnlyList<Recording> training)
         {
             var parts = new List<GaitMetrics>();
             foreach (var rec in training) parts.Add(ReplayEvaluator.Run(rec, make()).ClassifierMetrics);

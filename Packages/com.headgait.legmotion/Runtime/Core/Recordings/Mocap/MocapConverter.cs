@@ -72,7 +72,7 @@ namespace HeadGait.Mocap
         sealed class Capture
         {
             public BvhPose Pose;
-            public int Head, Up;
+            public int Head, Up, LeftAnkle, RightAnkle;
             public double Scale, Dt, FrameTime;
             public int N;
             public Vec3 UpVec, Forward, Left, SensorInHead;
@@ -99,6 +99,9 @@ namespace HeadGait.Mocap
             /// <summary>The head frame (columns forward, left, up in world axes) at time t.</summary>
             public Rotation3 HeadFrameAt(double t) => HeadRotationAt(Pose, Head, t / FrameTime) * HeadToFrame;
 
+            /// <summary>World (right-handed) to Unity's tracking space (left-handed): x = right = -left, y = up, z = forward.</summary>
+            public Vec3 Tracking(Vec3 v) => new Vec3(-Vec3.Dot(v, Left), Vec3.Dot(v, UpVec), Vec3.Dot(v, Forward));
+
             public GaitPhase LeftAt(int i) => Walking[i] ? LabelsLeft[i] : GaitPhase.Standing;
             public GaitPhase RightAt(int i) => Walking[i] ? LabelsRight[i] : GaitPhase.Standing;
         }
@@ -110,6 +113,8 @@ namespace HeadGait.Mocap
             int leftFoot = Joint(bvh, s.LeftFoot, "left-foot"), leftToe = Joint(bvh, s.LeftToe, "left-toe");
             int rightFoot = Joint(bvh, s.RightFoot, "right-foot"), rightToe = Joint(bvh, s.RightToe, "right-toe");
             int leftHip = Joint(bvh, s.LeftHip, "left-hip"), rightHip = Joint(bvh, s.RightHip, "right-hip");
+            c.LeftAnkle = leftFoot;
+            c.RightAnkle = rightFoot;
             var pose = c.Pose = new BvhPose(bvh);
             int up = c.Up = s.UpAxis >= 0 ? s.UpAxis : GuessUpAxis(pose, c.Head, leftFoot, rightFoot);
             if (up > 2) throw new ArgumentException("UpAxis must be 0 (x), 1 (y) or 2 (z).");
@@ -194,26 +199,20 @@ namespace HeadGait.Mocap
             for (int k = 0; k < 3; k++) track[k] = new NaturalCubicSpline(grid, sensor[k]);
             var origin = new Vec3(sensor[0][0], sensor[1][0], sensor[2][0]);
             origin = origin - Vec3.Dot(origin, c.UpVec) * c.UpVec;
-            // World (right-handed) to tracking space (left-handed): x = right = -left, y = up, z = forward.
-            Vec3 Tracking(Vec3 v) => new Vec3(-Vec3.Dot(v, c.Left), Vec3.Dot(v, c.UpVec), Vec3.Dot(v, c.Forward));
 
             var random = new DeterministicRandom((s.Seed != 0 ? s.Seed : DeterministicRandom.SeedFrom(bvh.Name)) ^ (ulong)(frameRate * 1000));
             var rows = new List<(PoseSample, GaitPhase, GaitPhase)>();
-            double start = s.TrimSeconds, end = (c.N - 1) * c.Dt - s.TrimSeconds, last = double.NegativeInfinity;
-            for (int k = 0; ; k++)
+            double start = s.TrimSeconds;
+            foreach (double t in JitteredFrames(c, s, frameRate, random))
             {
-                double t = start + k / frameRate + random.NextGaussian() * s.FrameJitterSd;
-                if (t > end) break;
-                if (t < start || t <= last + 1e-4) continue;
-                last = t;
                 var p = new Vec3(track[0].Value(t), track[1].Value(t), track[2].Value(t)) - origin;
-                var pos = Tracking(p) + new Vec3(random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd);
+                var pos = c.Tracking(p) + new Vec3(random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd, random.NextGaussian() * s.PositionNoiseSd);
                 var h = c.HeadFrameAt(t);
                 var forward = new Vec3(h.M00, h.M10, h.M20);
                 var left = new Vec3(h.M01, h.M11, h.M21);
                 var up = new Vec3(h.M02, h.M12, h.M22);
                 // Columns: the camera's right, up and forward axes in tracking space.
-                var rotation = Rotation3.FromColumns(Tracking(-1 * left), Tracking(up), Tracking(forward)) * SmallRotation(random, s.RotationNoiseDegrees);
+                var rotation = Rotation3.FromColumns(c.Tracking(-1 * left), c.Tracking(up), c.Tracking(forward)) * SmallRotation(random, s.RotationNoiseDegrees);
                 rotation.ToQuaternion(out double qx, out double qy, out double qz, out double qw);
                 int i = Math.Min(c.N - 1, (int)Math.Round(t / c.Dt));
                 rows.Add((new PoseSample(t - start, pos.X, pos.Y, pos.Z, qx, qy, qz, qw), c.LeftAt(i), c.RightAt(i)));
@@ -226,6 +225,70 @@ namespace HeadGait.Mocap
             rec.Metadata["frame_rate_hz"] = frameRate.ToString("R", ci);
             rec.Metadata["tracking_noise"] = $"position {s.PositionNoiseSd.ToString("R", ci)} m, rotation {s.RotationNoiseDegrees.ToString("R", ci)} deg, frame jitter {s.FrameJitterSd.ToString("R", ci)} s";
             return rec;
+        }
+
+        /// <summary>
+        /// The poses two tracked devices strapped to the ankles would report beside the head stream of
+        /// <see cref="ConvertPose"/> (same tracking space, origin and clock, so the head's acceleration recording from
+        /// <see cref="Convert"/> lines up with them too): each ankle joint's position and axes at <paramref name="frameRate"/>
+        /// frames per second with frame-time jitter and <paramref name="positionNoiseSd"/> of tracking noise (m; controllers
+        /// are noisier than the headset). Unlabelled: <c>Calibration.FootContactLabeller</c> labels the feet from them.
+        /// </summary>
+        public static (PoseRecording Left, PoseRecording Right) ConvertAnkles(BvhFile bvh, double frameRate, MocapSettings settings = null, double positionNoiseSd = 0.002)
+        {
+            if (!(frameRate >= 10 && frameRate <= 1000)) throw new ArgumentException("The frame rate must be 10 to 1000 Hz.", nameof(frameRate));
+            if (!(positionNoiseSd >= 0 && positionNoiseSd < 0.1)) throw new ArgumentException("The tracking noise must be 0 to 0.1 m.", nameof(positionNoiseSd));
+            var s = settings ?? new MocapSettings();
+            var c = Prepare(bvh, s);
+            var origin = c.Scale * (c.Pose.Positions[0][c.Head] + c.Pose.Rotations[0][c.Head] * c.SensorInHead);
+            origin = origin - Vec3.Dot(origin, c.UpVec) * c.UpVec;
+            var random = new DeterministicRandom((s.Seed != 0 ? s.Seed : DeterministicRandom.SeedFrom(bvh.Name)) ^ 0xA4C1E5UL ^ (ulong)(frameRate * 1000));
+            PoseRecording One(int joint, string side)
+            {
+                var track = new NaturalCubicSpline[3];
+                for (int k = 0; k < 3; k++)
+                {
+                    var v = new double[c.FrameTimes.Length];
+                    for (int f = 0; f < v.Length; f++) v[f] = c.Scale * c.Pose.Positions[f][joint][k];
+                    track[k] = new NaturalCubicSpline(c.FrameTimes, v);
+                }
+                var rows = new List<(PoseSample, GaitPhase, GaitPhase)>();
+                double start = s.TrimSeconds;
+                foreach (double t in JitteredFrames(c, s, frameRate, random))
+                {
+                    var p = c.Tracking(new Vec3(track[0].Value(t), track[1].Value(t), track[2].Value(t)) - origin)
+                            + new Vec3(random.NextGaussian() * positionNoiseSd, random.NextGaussian() * positionNoiseSd, random.NextGaussian() * positionNoiseSd);
+                    var r = HeadRotationAt(c.Pose, joint, t / c.FrameTime);
+                    // The joint's axes in tracking space; the first mirrored so that the mirrored space keeps a rotation.
+                    var rotation = Rotation3.FromColumns(c.Tracking(-1 * new Vec3(r.M00, r.M10, r.M20)), c.Tracking(new Vec3(r.M01, r.M11, r.M21)), c.Tracking(new Vec3(r.M02, r.M12, r.M22)));
+                    rotation.ToQuaternion(out double qx, out double qy, out double qz, out double qw);
+                    rows.Add((new PoseSample(t - start, p.X, p.Y, p.Z, qx, qy, qz, qw), GaitPhase.Standing, GaitPhase.Standing));
+                }
+                var rec = new PoseRecording(System.IO.Path.GetFileNameWithoutExtension(bvh.Name) + $"_{side}-ankle_{frameRate:0}hz", rows);
+                var ci = CultureInfo.InvariantCulture;
+                rec.Metadata["source"] = bvh.Name;
+                rec.Metadata["generator"] = "headgait from-bvh --ankles (ankle joint pose as a strapped tracked device reports it; unlabelled)";
+                rec.Metadata["device"] = side + "-ankle";
+                rec.Metadata["joint"] = bvh.Joints[joint].Name;
+                rec.Metadata["frame_rate_hz"] = frameRate.ToString("R", ci);
+                rec.Metadata["tracking_noise"] = $"position {positionNoiseSd.ToString("R", ci)} m, frame jitter {s.FrameJitterSd.ToString("R", ci)} s";
+                return rec;
+            }
+            return (One(c.LeftAnkle, "left"), One(c.RightAnkle, "right"));
+        }
+
+        /// <summary>A tracked device's frame times: <paramref name="frameRate"/> per second with frame-time jitter, increasing, within the trimmed clip.</summary>
+        static IEnumerable<double> JitteredFrames(Capture c, MocapSettings s, double frameRate, DeterministicRandom random)
+        {
+            double start = s.TrimSeconds, end = (c.N - 1) * c.Dt - s.TrimSeconds, last = double.NegativeInfinity;
+            for (int k = 0; ; k++)
+            {
+                double t = start + k / frameRate + random.NextGaussian() * s.FrameJitterSd;
+                if (t > end) yield break;
+                if (t < start || t <= last + 1e-4) continue;
+                last = t;
+                yield return t;
+            }
         }
 
         /// <summary>A rotation about a random axis by a normally distributed angle (degrees SD).</summary>
@@ -400,7 +463,7 @@ namespace HeadGait.Mocap
         /// <paramref name="standingSeconds"/>. A clip that starts or ends mid-walk (both feet down for less than that
         /// at its edge) is walking up to the edge.
         /// </summary>
-        static bool[] WalkingBouts(bool[] left, bool[] right, double dt, double standingSeconds)
+        internal static bool[] WalkingBouts(bool[] left, bool[] right, double dt, double standingSeconds)
         {
             int n = left.Length;
             var walking = new bool[n];

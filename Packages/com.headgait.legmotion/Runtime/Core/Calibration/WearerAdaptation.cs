@@ -1,0 +1,334 @@
+using System;
+using System.Collections.Generic;
+using HeadGait.Training;
+
+namespace HeadGait.Calibration
+{
+    /// <summary>
+    /// Fits the classifiers to one wearer from a calibration walk, in C# and in seconds: COR's step templates (the wearer's
+    /// own mean step added in front of the trained ones, then the correlation threshold, contact lags and clock lead
+    /// recalibrated on the walk), THR's floor, lag, sideways profile and clock lead (recalibrated starting from the trained
+    /// settings), how far the walking gates must open to pass the wearer's walking, and the learned models' input gain. The
+    /// walk is labelled either from two ankle trackers (<see cref="FootContactLabeller"/>) or by the shipped COR itself
+    /// (<see cref="SelfLabel"/>). Bounded so that it cannot make standing walk: a gate opens by at most
+    /// <see cref="WearerProfile.MaxGateShift"/>, COR's threshold drops by at most <see cref="MaxThresholdDrop"/>, THR's floor
+    /// to no less than <see cref="MinFloorShare"/> of the trained one.
+    /// </summary>
+    /// <summary>Which parts of the classifiers a calibration walk refits (the defaults are the measured choice; see <see cref="WearerAdaptation"/>).</summary>
+    public sealed class AdaptationSettings
+    {
+        /// <summary>Add the wearer's own mean step in front of COR's trained templates.</summary>
+        public bool CorTemplate = true;
+        /// <summary>Recalibrate COR's correlation threshold and contact lags on the walk (else the trained ones stay): off, it cost more than it gave (see <see cref="WearerAdaptation"/>).</summary>
+        public bool CorThreshold;
+        /// <summary>Recalibrate COR's clock lead on the walk: off, as <see cref="CorThreshold"/>.</summary>
+        public bool CorLead;
+        /// <summary>Recalibrate THR's floor, lag and sideways profile on the walk, then its clock lead.</summary>
+        public bool Threshold = true;
+        /// <summary>Open THR's and COR's walking gates as far as the wearer's walking needs (bounded): off, it changed nothing on the real walkers' held-out recordings.</summary>
+        public bool DetectorGates;
+        /// <summary>Open the learned models' gate as far as the wearer's walking needs (bounded): off, it let a generated walker's head movement show as walking.</summary>
+        public bool LearnedGate;
+        /// <summary>
+        /// Keep each refitted part only where it scores the calibration walk itself better than the trained one by at least
+        /// this much misclassification (0.01 = a point); NaN keeps every part.
+        /// </summary>
+        public double AcceptMargin = 0.005;
+        /// <summary>
+        /// The settings for a walk labelled from ankle trackers, or self-supervised: there THR is not refitted, as its
+        /// labels come from COR's own contacts and a refitted THR followed them into worse contact timing.
+        /// </summary>
+        public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised ? new AdaptationSettings { Threshold = false } : new AdaptationSettings();
+
+        /// <summary>Steps at which THR's refitted values and the trained ones weigh the same (shrinks a short walk's fit towards training).</summary>
+        public double ThresholdPriorSteps = 20;
+        /// <summary>Scale the learned models' input towards the training walkers' bounce.</summary>
+        public bool LearnedGain = true;
+    }
+
+    public static class WearerAdaptation
+    {
+        /// <summary>Steps a calibration walk must hold.</summary>
+        public const int MinSteps = 6;
+
+        /// <summary>Largest drop of COR's correlation threshold below the trained one.</summary>
+        public const double MaxThresholdDrop = 0.05;
+
+        /// <summary>THR's floor stays at least this share of the trained floor.</summary>
+        public const double MinFloorShare = 0.6;
+
+        /// <summary>Augmented copies of the walk the fit also reads (as training does: the wearer's steps vary too).</summary>
+        public const int AugmentedCopies = 2;
+
+        /// <summary>
+        /// A profile from a labelled calibration walk (labels from ankle trackers, or <see cref="SelfLabel"/>'s). Throws
+        /// <see cref="InvalidOperationException"/> when the walk holds fewer than <see cref="MinSteps"/> steps or the models
+        /// lack THR or COR.
+        /// </summary>
+        public static WearerProfile Fit(GaitModels models, IReadOnlyList<Recording> walk, string wearer, string source = WearerProfile.FromFootReferences, AdaptationSettings settings = null)
+        {
+            var a = settings ?? AdaptationSettings.For(source);
+            if (models?.Correlation == null || models.Threshold == null) throw new InvalidOperationException("Calibration needs the trained THR settings and COR template.");
+            int steps = 0;
+            foreach (var r in walk) steps += PhaseEvents.TruthSteps(r).Count;
+            if (steps < MinSteps) throw new InvalidOperationException($"The calibration walk holds {steps} steps (at least {MinSteps} are needed): walk for longer.");
+            var training = GaitTraining.WithAugmentation(walk, AugmentedCopies);
+            var baseCor = models.Correlation;
+            var baseThr = models.Threshold;
+            var map = baseCor.PhaseMap;
+
+            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass)) : baseCor.Gate;
+            var templates = new List<StepTemplate>();
+            if (a.CorTemplate) templates.AddRange(CorrelationTemplate.Train(training, map, corGate, 1).Templates);
+            foreach (var t in baseCor.Templates)
+                if (templates.Count < 16) templates.Add(t);
+            var cor = baseCor.With(templates: templates, gate: corGate);
+            if (a.CorThreshold)
+            {
+                cor = CorrelationClassifier.Calibrate(cor, training);
+                cor = cor.With(minCorrelation: Math.Max(cor.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
+            }
+            else if (a.CorTemplate)
+            {
+                // The wearer's template takes the trained templates' median lag.
+                var lags = new List<double>();
+                foreach (var t in baseCor.Templates) lags.Add(t.ContactLag);
+                templates[0] = templates[0].WithLag(GaitMetrics.Median(lags));
+                cor = cor.With(templates: templates);
+            }
+            if (a.CorLead)
+            {
+                var fitted = cor;
+                cor = cor.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
+            }
+
+            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass)) : baseThr.Gate;
+            var thr = baseThr.Clone();
+            thr.Gate = thrGate;
+            if (a.Threshold)
+            {
+                var refit = ThresholdClassifier.Calibrate(training, baseThr.PhaseMap, thrGate, baseThr);
+                refit.Floor = Math.Max(refit.Floor, MinFloorShare * baseThr.Floor);
+                var refitFitted = refit.Clone();
+                refit.Clock.Lead = GaitTraining.ContactTiming(() => new ThresholdClassifier(refitFitted), training);
+                thr = Shrunk(baseThr, refit, steps / (steps + a.ThresholdPriorSteps));
+            }
+
+            // Each part only where it pays on the walk itself.
+            var shippedCor = baseCor.With(gate: corGate);
+            var shippedThr = baseThr.Clone();
+            shippedThr.Gate = thrGate;
+            if (!Pays(() => new CorrelationClassifier(cor), () => new CorrelationClassifier(shippedCor), walk, a.AcceptMargin)) cor = shippedCor;
+            if (!Pays(() => new ThresholdClassifier(thr), () => new ThresholdClassifier(shippedThr), walk, a.AcceptMargin)) thr = shippedThr;
+
+            var learnedGate = LearnedGate(models);
+            var profile = new WearerProfile
+            {
+                Wearer = wearer,
+                Source = source,
+                Steps = steps,
+                BaseModels = WearerProfile.Fingerprint(models),
+                Threshold = thr,
+                Correlation = cor,
+                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass),
+                LearnedGain = a.LearnedGain ? LearnedGain(baseCor.LeadReferenceBounce, walk) : 1,
+            };
+            // The learned models' scaling too only where it pays on the walk (the SVM's and the BLSTM's scores together).
+            if (profile.LearnedGain != 1 || profile.LearnedGateShift != 0)
+            {
+                var learned = models.Svm ?? models.Blstm;
+                bool isSvm = models.Svm != null;
+                if (learned == null) profile.LearnedGain = 1;
+                else
+                {
+                    LearnedClassifier Make(ModelFile f) => isSvm ? (LearnedClassifier)new SvmClassifier(f, SvmClassifier.DefaultFilter()) : new BlstmClassifier(f, new PhaseFilterSettings());
+                    var scaled = profile.ScaledModel(learned);
+                    if (!Pays(() => Make(scaled), () => Make(learned), walk, a.AcceptMargin))
+                    {
+                        profile.LearnedGain = 1;
+                        profile.LearnedGateShift = 0;
+                    }
+                }
+            }
+            return profile;
+        }
+
+        /// <summary>Whether <paramref name="adapted"/> misclassifies the walk less than <paramref name="shipped"/> by at least <paramref name="margin"/> (NaN: always).</summary>
+        static bool Pays(Func<IGaitClassifier> adapted, Func<IGaitClassifier> shipped, IReadOnlyList<Recording> walk, double margin)
+        {
+            if (double.IsNaN(margin)) return true;
+            double Score(Func<IGaitClassifier> make)
+            {
+                var parts = new List<GaitMetrics>();
+                foreach (var r in walk) parts.Add(ReplayEvaluator.Run(r, make()).ClassifierMetrics);
+                return GaitMetrics.Pool(parts).MisclassificationRate;
+            }
+            return Score(adapted) <= Score(shipped) - margin;
+        }
+
+        /// <summary>THR's refitted floor, lag, sideways profile and clock lead moved from the trained ones by <paramref name="weight"/> of the way.</summary>
+        static ThresholdSettings Shrunk(ThresholdSettings trained, ThresholdSettings refit, double weight)
+        {
+            double Mix(double a, double b) => a + weight * (b - a);
+            var s = refit.Clone();
+            s.Floor = Mix(trained.Floor, refit.Floor);
+            s.ContactLag = Mix(trained.ContactLag, refit.ContactLag);
+            if (!double.IsNaN(trained.DatingLevel) && !double.IsNaN(refit.DatingLevel)) s.DatingLevel = Mix(trained.DatingLevel, refit.DatingLevel);
+            if (trained.LateralProfile.Length == refit.LateralProfile.Length)
+            {
+                s.LateralProfile = new double[refit.LateralProfile.Length];
+                for (int i = 0; i < s.LateralProfile.Length; i++) s.LateralProfile[i] = Mix(trained.LateralProfile[i], refit.LateralProfile[i]);
+            }
+            s.Clock.Lead = Mix(trained.Clock.Lead, refit.Clock.Lead);
+            s.Clock.LeadPerLogBounce = Mix(trained.Clock.LeadPerLogBounce, refit.Clock.LeadPerLogBounce);
+            return s;
+        }
+
+        /// <summary>The walking gate written into the learned models (the SVM's, else the BLSTM's); null without one.</summary>
+        static WalkingGate LearnedGate(GaitModels models)
+        {
+            foreach (var m in new[] { models.Svm, models.Blstm })
+                if (m != null && m.Values.TryGetValue(WalkingGate.ModelKey, out var text)) return WalkingGate.Parse(text);
+            return null;
+        }
+
+        /// <summary>
+        /// Log-odds to add to <paramref name="gate"/> so that <paramref name="pass"/> of the walk's walking windows pass, as
+        /// training set it for the training walkers (0 when they already do; at most <see cref="WearerProfile.MaxGateShift"/>).
+        /// </summary>
+        public static double GateShift(WalkingGate gate, IReadOnlyList<Recording> walk, double pass)
+        {
+            if (gate == null) return 0;
+            var scores = new List<double>();
+            foreach (var rec in walk)
+            {
+                var labels = new LabelCursor(rec);
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = gate.History });
+                foreach (var s in rec.Samples)
+                    pre.Push(s.Imu, w =>
+                    {
+                        if (labels.TryLabelsAt(w.EndTime, out var truth) && truth.Left != GaitPhase.Standing) scores.Add(gate.Score(w));
+                    });
+            }
+            if (scores.Count < 50) return 0;
+            scores.Sort();
+            double q = scores[(int)Math.Floor((1 - pass) * (scores.Count - 1))];
+            return Math.Max(0, Math.Min(WearerProfile.MaxGateShift, -q));
+        }
+
+        /// <summary>
+        /// The learned models' input gain: the training walkers' typical step peak (SMV minus gravity, COR's
+        /// <see cref="CorrelationTemplate.LeadReferenceBounce"/>) over the wearer's median step peak, within
+        /// <see cref="WearerProfile.MinLearnedGain"/>..<see cref="WearerProfile.MaxLearnedGain"/>.
+        /// </summary>
+        public static double LearnedGain(double referenceBounce, IReadOnlyList<Recording> walk)
+        {
+            var peaks = new List<double>();
+            foreach (var rec in walk)
+            {
+                var raw = new RawSignal(rec);
+                foreach (var step in PhaseEvents.TruthSteps(rec))
+                {
+                    double peak = double.NegativeInfinity;
+                    for (double t = step.Start; t <= step.End; t += 0.01) peak = Math.Max(peak, raw.Smv(t));
+                    peaks.Add(peak);
+                }
+            }
+            if (peaks.Count < MinSteps || !(referenceBounce > 0)) return 1;
+            double median = GaitMetrics.Median(peaks);
+            if (!(median > 0)) return 1;
+            return Math.Max(WearerProfile.MinLearnedGain, Math.Min(WearerProfile.MaxLearnedGain, referenceBounce / median));
+        }
+
+        /// <summary>Contacts in a row (at least) that make a stretch of the walk the shipped COR is sure of.</summary>
+        public const int MinSureContacts = 5;
+
+        /// <summary>How far a step may differ from its stretch's median step (share) and still count as the same rhythm.</summary>
+        public const double RhythmTolerance = 0.25;
+
+        /// <summary>
+        /// Self-supervised labels (no foot references): the walk replayed through the shipped COR; every stretch of at least
+        /// <see cref="MinSureContacts"/> contacts in a clear rhythm (each step within <see cref="RhythmTolerance"/> of the
+        /// stretch's median, 0.3 to 1 s) becomes a labelled walking recording, its feet alternating from the side COR
+        /// named most often and each foot's phases spread over its stride by the trained phase map. Empty when none is sure.
+        /// </summary>
+        public static List<Recording> SelfLabel(GaitModels models, Recording walk)
+        {
+            if (models?.Correlation == null) throw new InvalidOperationException("Self-supervised calibration needs the trained COR template.");
+            var cor = new CorrelationClassifier(models.Correlation);
+            var contacts = new List<(double time, double evidence)>();
+            cor.ContactDetected += (t, e, r, k) => contacts.Add((t, e));
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
+            foreach (var s in walk.Samples) pre.Push(s.Imu, w => cor.Classify(w));
+            var stretches = new List<Recording>();
+            int start = 0;
+            for (int i = 1; i <= contacts.Count; i++)
+            {
+                bool breaks = i == contacts.Count || !(contacts[i].time - contacts[i - 1].time >= 0.3 && contacts[i].time - contacts[i - 1].time <= 1.0);
+                if (!breaks) continue;
+                // Within the run [start, i), keep the longest part whose steps stay near its median step.
+                AddSure(walk, models.Correlation.PhaseMap, contacts, start, i, stretches);
+                start = i;
+            }
+            return stretches;
+        }
+
+        static void AddSure(Recording walk, PhaseMap map, List<(double time, double evidence)> contacts, int from, int to, List<Recording> stretches)
+        {
+            if (to - from < MinSureContacts) return;
+            var steps = new List<double>();
+            for (int i = from + 1; i < to; i++) steps.Add(contacts[i].time - contacts[i - 1].time);
+            double median = GaitMetrics.Median(steps);
+            int runStart = from;
+            for (int i = from + 1; i <= to; i++)
+            {
+                bool steady = i < to && Math.Abs(contacts[i].time - contacts[i - 1].time - median) <= RhythmTolerance * median;
+                if (steady) continue;
+                if (i - runStart >= MinSureContacts) stretches.Add(Labelled(walk, map, contacts.GetRange(runStart, i - runStart), stretches.Count));
+                runStart = i;
+            }
+        }
+
+        /// <summary>The walk between the first and last of <paramref name="contacts"/>, labelled from them.</summary>
+        static Recording Labelled(Recording walk, PhaseMap map, List<(double time, double evidence)> contacts, int index)
+        {
+            // Which foot the even contacts are: the side evidence of the even ones against the odd ones.
+            double even = 0;
+            for (int k = 0; k < contacts.Count; k++) even += (k % 2 == 0 ? 1 : -1) * contacts[k].evidence;
+            bool evenLeft = even >= 0;
+            double first = contacts[0].time, last = contacts[contacts.Count - 1].time;
+            var samples = new List<RecordedSample>();
+            foreach (var s in walk.Samples)
+            {
+                double t = s.Imu.Time;
+                if (t < first || t > last) continue;
+                samples.Add(new RecordedSample(s.Imu, FootPhase(map, contacts, t, evenLeft ? 0 : 1), FootPhase(map, contacts, t, evenLeft ? 1 : 0), s.Line));
+            }
+            return new Recording($"{walk.Name}_sure{index + 1}", samples);
+        }
+
+        /// <summary>The phase of the foot whose contacts are those of parity <paramref name="parity"/> at time t.</summary>
+        static GaitPhase FootPhase(PhaseMap map, List<(double time, double evidence)> contacts, double t, int parity)
+        {
+            int n = contacts.Count;
+            // The foot's last contact at or before t, and its next; beyond the ends a stride is the median of two steps.
+            int before = -1;
+            for (int k = parity; k < n; k += 2)
+                if (contacts[k].time <= t) before = k;
+            double stride = 2 * (contacts[n - 1].time - contacts[0].time) / (n - 1);
+            double a, b;
+            if (before < 0)
+            {
+                b = contacts[parity].time;
+                a = b - stride;
+            }
+            else
+            {
+                a = contacts[before].time;
+                b = before + 2 < n ? contacts[before + 2].time : a + stride;
+            }
+            double cycle = Math.Max(0, Math.Min(0.999999, (t - a) / (b - a)));
+            return map.PhaseAtCycle(cycle, map.StanceShare(0.5 * (b - a)));
+        }
+    }
+}

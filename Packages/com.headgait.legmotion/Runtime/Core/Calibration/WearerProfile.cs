@@ -1,0 +1,221 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Text;
+
+namespace HeadGait.Calibration
+{
+    /// <summary>
+    /// What a calibration walk fitted to one wearer, saved as a small text file (<c># headgait-wearer-profile v1</c>): THR's
+    /// settings and COR's templates in full (their own keys, prefixed <c>thr.</c> and <c>cor.</c>, read back by their own
+    /// parsers), how much further the walking gates open for this wearer, the learned models' input gain, and which models it
+    /// was fitted against. <see cref="Apply"/> gives adapted copies of the models; the models themselves are never changed.
+    /// </summary>
+    public sealed class WearerProfile
+    {
+        public const string Magic = "# headgait-wearer-profile v1";
+        public const string Extension = ".profile.txt";
+
+        /// <summary>Most a profile may open a walking gate (log-odds added to its bias): the guard against gestures stays.</summary>
+        public const double MaxGateShift = 1.0;
+
+        /// <summary>Range of the learned models' input gain (the wearer's bounce brought towards the training walkers').</summary>
+        public const double MinLearnedGain = 0.75, MaxLearnedGain = 1.5;
+
+        public const string FromFootReferences = "foot-references";
+        public const string SelfSupervised = "self-supervised";
+
+        public string Wearer;
+        /// <summary><see cref="FromFootReferences"/> or <see cref="SelfSupervised"/>.</summary>
+        public string Source = FromFootReferences;
+        public DateTime CreatedUtc = DateTime.UtcNow;
+        /// <summary>Steps of the calibration walk the fit used.</summary>
+        public int Steps;
+        /// <summary>Fingerprint of the models it was fitted against (<see cref="Fingerprint"/>); empty: not checked.</summary>
+        public string BaseModels = "";
+
+        public ThresholdSettings Threshold;
+        public CorrelationTemplate Correlation;
+        /// <summary>Log-odds added to the SVM's and BLSTM's walking gate (0..<see cref="MaxGateShift"/>).</summary>
+        public double LearnedGateShift;
+        /// <summary>Factor on the acceleration the SVM and BLSTM read (through their input scaling).</summary>
+        public double LearnedGain = 1;
+
+        /// <summary>Whether a wearer id makes a file name here and on every platform: 1-64 letters, digits, '-', '_' or '.', not starting with '.'.</summary>
+        public static bool IsValidWearer(string wearer)
+        {
+            if (string.IsNullOrEmpty(wearer) || wearer.Length > 64 || wearer[0] == '.') return false;
+            foreach (char ch in wearer)
+                if (!(ch < 128 && (char.IsLetterOrDigit(ch) || ch == '-' || ch == '_' || ch == '.'))) return false;
+            return true;
+        }
+
+        /// <summary>
+        /// Adapted copies of <paramref name="models"/> for this wearer: THR and COR from the profile (each with its gate), the
+        /// SVM and BLSTM with their input scaled by <see cref="LearnedGain"/> and their gate opened by <see cref="LearnedGateShift"/>.
+        /// Problems of the models carry over; a classifier the models lack stays absent.
+        /// </summary>
+        public GaitModels Apply(GaitModels models)
+        {
+            if (models == null) throw new ArgumentNullException(nameof(models));
+            var adapted = new GaitModels
+            {
+                Threshold = Threshold ?? models.Threshold,
+                Correlation = Correlation ?? models.Correlation,
+                Svm = models.Svm == null ? null : ScaledModel(models.Svm),
+                Blstm = models.Blstm == null ? null : ScaledModel(models.Blstm),
+            };
+            adapted.Problems.AddRange(models.Problems);
+            return adapted;
+        }
+
+        /// <summary>A copy of a learned model whose input scaling reads the acceleration times <see cref="LearnedGain"/> and whose gate is opened by <see cref="LearnedGateShift"/>.</summary>
+        public ModelFile ScaledModel(ModelFile model)
+        {
+            var copy = ModelFile.Parse(model.ToBytes(), model.Source + " (wearer " + Wearer + ")");
+            var shape = copy.ShapeOf("input_mean");
+            var mean = (double[])copy.Tensor("input_mean", shape).Clone();
+            var scale = (double[])copy.Tensor("input_scale", shape).Clone();
+            // (gain x - mean) / scale = (x - mean / gain) / (scale / gain): the model reads the wearer's signal as if it were gain times larger.
+            for (int i = 0; i < mean.Length; i++)
+            {
+                mean[i] /= LearnedGain;
+                scale[i] /= LearnedGain;
+            }
+            copy.AddTensor("input_mean", shape, mean, true);
+            copy.AddTensor("input_scale", shape, scale, true);
+            if (copy.Values.TryGetValue(WalkingGate.ModelKey, out var gateText))
+                copy.Set(WalkingGate.ModelKey, OpenGate(WalkingGate.Parse(gateText), LearnedGateShift).Serialize());
+            return copy;
+        }
+
+        /// <summary>The gate with <paramref name="shift"/> added to its log-odds (null stays null: no gate).</summary>
+        public static WalkingGate OpenGate(WalkingGate gate, double shift)
+        {
+            if (gate == null || shift == 0) return gate;
+            var w = gate.Weights;
+            w[WalkingGate.InputCount] += shift;
+            return new WalkingGate(w, gate.LevelTolerance, gate.UsesStepRhythm);
+        }
+
+        /// <summary>
+        /// A fingerprint of the trained THR and COR (their text), however they were loaded (a folder, Unity assets): a
+        /// profile fitted against other ones is not applied. The learned models are left out: a component that runs COR
+        /// reads no learned model, and the profile's input gain does not depend on which model it scales.
+        /// </summary>
+        public static string Fingerprint(GaitModels models)
+        {
+            if (models == null) return "";
+            ulong hash = 14695981039346656037UL; // FNV-1a
+            void Add(byte[] bytes)
+            {
+                foreach (byte b in bytes) hash = (hash ^ b) * 1099511628211UL;
+                hash = (hash ^ 0xFF) * 1099511628211UL;
+            }
+            Add(models.Threshold == null ? Array.Empty<byte>() : Encoding.UTF8.GetBytes(models.Threshold.Serialize()));
+            Add(models.Correlation == null ? Array.Empty<byte>() : Encoding.UTF8.GetBytes(models.Correlation.Serialize()));
+            return hash.ToString("x16", CultureInfo.InvariantCulture);
+        }
+
+        public string Serialize()
+        {
+            var ci = CultureInfo.InvariantCulture;
+            var pairs = new List<KeyValuePair<string, string>>
+            {
+                new KeyValuePair<string, string>("wearer", Wearer),
+                new KeyValuePair<string, string>("source", Source),
+                new KeyValuePair<string, string>("created_utc", CreatedUtc.ToString("yyyy-MM-ddTHH:mm:ssZ", ci)),
+                new KeyValuePair<string, string>("steps", Steps.ToString(ci)),
+                new KeyValuePair<string, string>("base_models", BaseModels ?? ""),
+                new KeyValuePair<string, string>("learned_gate_shift", LearnedGateShift.ToString("R", ci)),
+                new KeyValuePair<string, string>("learned_gain", LearnedGain.ToString("R", ci)),
+            };
+            var sb = new StringBuilder(KeyValueText.Write(Magic, pairs, "a wearer's calibration (headgait calibrate); delete the file to reset the wearer to the shipped models"));
+            if (Threshold != null) Embed(sb, ThrPrefix, Threshold.Serialize());
+            if (Correlation != null) Embed(sb, CorPrefix, Correlation.Serialize());
+            return sb.ToString();
+        }
+
+        const string ThrPrefix = "thr.", CorPrefix = "cor.";
+
+        static void Embed(StringBuilder sb, string prefix, string document)
+        {
+            foreach (var raw in document.Split('\n'))
+            {
+                string line = raw.Trim();
+                if (line.Length == 0 || line.StartsWith("#", StringComparison.Ordinal)) continue;
+                sb.Append(prefix).Append(line).Append('\n');
+            }
+        }
+
+        /// <summary>Writes the profile whole or not at all (<see cref="AtomicFile"/>): an earlier profile survives a failed write.</summary>
+        public void Save(string path)
+        {
+            Validate(path);
+            AtomicFile.WriteAllText(path, Serialize());
+        }
+
+        public static WearerProfile Load(string path)
+        {
+            if (!File.Exists(path)) throw new FileNotFoundException($"{path}: wearer profile not found", path);
+            return Parse(File.ReadAllText(path, Encoding.UTF8), path);
+        }
+
+        /// <summary>Reads a profile as <see cref="Serialize"/> writes it; a <see cref="FormatException"/> names the source and what is wrong.</summary>
+        public static WearerProfile Parse(string text, string source = "wearer profile")
+        {
+            if (text == null) throw new FormatException($"{source}: no text");
+            var own = new StringBuilder();
+            var thr = new StringBuilder(ThresholdSettings.Magic + "\n");
+            var cor = new StringBuilder(CorrelationTemplate.Magic + "\n");
+            bool hasThr = false, hasCor = false;
+            foreach (var raw in text.Replace("\r\n", "\n").Replace('\r', '\n').Split('\n'))
+            {
+                string line = raw.Trim();
+                if (line.StartsWith(ThrPrefix, StringComparison.Ordinal))
+                {
+                    thr.Append(line.Substring(ThrPrefix.Length)).Append('\n');
+                    hasThr = true;
+                }
+                else if (line.StartsWith(CorPrefix, StringComparison.Ordinal))
+                {
+                    cor.Append(line.Substring(CorPrefix.Length)).Append('\n');
+                    hasCor = true;
+                }
+                else own.Append(raw).Append('\n');
+            }
+            var kv = KeyValueText.Parse(own.ToString(), Magic, source);
+            var p = new WearerProfile
+            {
+                Wearer = kv.Need("wearer"),
+                Source = kv.Need("source"),
+                Steps = (int)kv.Number("steps", 0, 1e6),
+                BaseModels = kv.Has("base_models") ? kv.Need("base_models") : "",
+                LearnedGateShift = kv.Number("learned_gate_shift", 0, MaxGateShift),
+                LearnedGain = kv.Number("learned_gain", MinLearnedGain, MaxLearnedGain),
+            };
+            if (!DateTime.TryParse(kv.Need("created_utc"), CultureInfo.InvariantCulture, DateTimeStyles.AdjustToUniversal | DateTimeStyles.AssumeUniversal, out p.CreatedUtc))
+                throw new FormatException($"{source}: created_utc '{kv.Need("created_utc")}' is not a date and time");
+            try
+            {
+                if (hasThr) p.Threshold = ThresholdSettings.Parse(thr.ToString(), source + " (thr.)");
+                if (hasCor) p.Correlation = CorrelationTemplate.Parse(cor.ToString(), source + " (cor.)");
+            }
+            catch (ArgumentException e)
+            {
+                throw new FormatException($"{source}: {e.Message}");
+            }
+            p.Validate(source);
+            return p;
+        }
+
+        void Validate(string source)
+        {
+            if (!IsValidWearer(Wearer)) throw new FormatException($"{source}: wearer '{Wearer}' is not 1-64 letters, digits, '-', '_' or '.'");
+            if (Source != FromFootReferences && Source != SelfSupervised) throw new FormatException($"{source}: source '{Source}' is neither {FromFootReferences} nor {SelfSupervised}");
+            if (!(LearnedGateShift >= 0 && LearnedGateShift <= MaxGateShift)) throw new FormatException($"{source}: learned_gate_shift {LearnedGateShift} is outside 0..{MaxGateShift}");
+            if (!(LearnedGain >= MinLearnedGain && LearnedGain <= MaxLearnedGain)) throw new FormatException($"{source}: learned_gain {LearnedGain} is outside {MinLearnedGain}..{MaxLearnedGain}");
+        }
+    }
+}

@@ -1,0 +1,258 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using HeadGait.Calibration;
+using HeadGait.Mocap;
+using HeadGait.Synthetic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>
+    /// The wearer calibration's core: ankle trackers to foot labels, the fit's bounds, profiles on disk (versioned,
+    /// validated, atomic, reset) and the self-supervised labels.
+    /// </summary>
+    public class CalibrationTests
+    {
+        static GaitModels shipped;
+        static GaitModels Shipped => shipped ?? (shipped = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)));
+
+        static Recording Unlabelled(Recording r) => new Recording(r.Name, r.Samples.Select(s => new RecordedSample(s.Imu)).ToList());
+
+        static GaitSubject Wearer()
+        {
+            var s = GaitSubject.Random(12, "calm-wearer");
+            s.StepFrequency = 1.5;
+            s.VerticalAmplitude *= 0.6;
+            return s;
+        }
+
+        static Recording Walk(GaitSubject wearer, ulong seed = 84)
+            => WalkingStreamGenerator.Generate("calibration", wearer, new StreamScript().Stand(2).Walk(25, Foot.Left).Stand(1).Walk(25, Foot.Right, 40).Stand(3), seed);
+
+        static double Agreement(Recording a, Recording truth) => FootContactLabeller.Agreement(a, truth);
+
+        [Test]
+        public void AnkleTrackersLabelAGeneratedWalkersFeet()
+        {
+            var walk = Walk(Wearer());
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var labelled = FootContactLabeller.Label(Unlabelled(walk), left, right);
+            Assert.That(Agreement(labelled, walk), Is.GreaterThan(0.8));
+            var truth = PhaseEvents.TruthContacts(walk);
+            var offsets = PhaseEvents.TruthContacts(labelled).Select(c => Math.Abs(PhaseEvents.OffsetFromNearest(truth, c.Time))).ToList();
+            // The made-up ankle slows as it lands, so it settles a little before the labels' contact.
+            Assert.That(GaitMetrics.Median(offsets), Is.LessThan(0.04), "contacts where the walker's feet land");
+            Assert.That(PhaseEvents.TruthContacts(labelled).Count, Is.EqualTo(truth.Count).Within(4));
+            // Standing at the ends and in the middle stays standing.
+            Assert.That(labelled.Samples.Take(100).All(s => s.Left == GaitPhase.Standing), Is.True);
+        }
+
+        [Test]
+        public void AnkleTrackersFromMotionCaptureLabelLikeTheConverter()
+        {
+            string bvh = Path.Combine(TestData.SharedData("bvh/train"), "dataset-1_walk_feminine_001.bvh");
+            if (!File.Exists(bvh)) Assert.Ignore($"{bvh} not found");
+            var file = BvhFile.Load(bvh);
+            var session = CalibrationSession.FromMotionCapture(file, 72);
+            var converted = MocapConverter.Convert(file);
+            Assert.That(session.LeftAnkle.Count, Is.EqualTo(72 * converted.Duration).Within(3));
+            Assert.That(Agreement(session.Labelled(), converted), Is.GreaterThan(0.85));
+        }
+
+        [Test]
+        public void BrokenAnkleStreamsAreRefusedNamingTheStream()
+        {
+            var walk = Walk(Wearer());
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var gap = left.Where(p => p.Time < 10 || p.Time > 10.5).ToList();
+            var e = Assert.Throws<ArgumentException>(() => FootContactLabeller.Label(Unlabelled(walk), gap, right));
+            Assert.That(e.Message, Does.Contain("left ankle").And.Contain("loses tracking"));
+            var late = right.Where(p => p.Time > 5).ToList();
+            e = Assert.Throws<ArgumentException>(() => FootContactLabeller.Label(Unlabelled(walk), left, late));
+            Assert.That(e.Message, Does.Contain("right ankle").And.Contain("recorded together"));
+            Assert.Throws<ArgumentException>(() => FootContactLabeller.Label(Unlabelled(walk), left.Take(5).ToList(), right));
+        }
+
+        [Test]
+        public void AShortWalkIsRefused()
+        {
+            var walk = CalibrationWalkRecorder(4);
+            Assert.That(walk.End(), Is.Null);
+            Assert.That(walk.State, Is.EqualTo(CalibrationWalk.Stage.Failed));
+            Assert.That(walk.Prompt(0), Does.Contain("failed"));
+            var shortWalk = WalkingStreamGenerator.Generate("short", Wearer(), new StreamScript().Stand(1).Walk(2, Foot.Left).Stand(1), 5);
+            var e = Assert.Throws<InvalidOperationException>(() => WearerAdaptation.Fit(Shipped, new[] { shortWalk }, "w"));
+            Assert.That(e.Message, Does.Contain("walk for longer"));
+        }
+
+        static CalibrationWalk CalibrationWalkRecorder(double seconds)
+        {
+            var walk = new CalibrationWalk(30);
+            walk.Begin(0);
+            for (int i = 0; i < seconds * 100; i++) walk.AddHead(new ImuSample(i * 0.01, 0, 0, 9.81));
+            return walk;
+        }
+
+        [Test]
+        public void TheCalibrationWalkPromptsTheWearerThroughIt()
+        {
+            var walk = new CalibrationWalk(60);
+            Assert.That(walk.Prompt(0), Does.Contain("Start"));
+            walk.Begin(100);
+            Assert.That(walk.Prompt(101), Does.Contain("straight ahead"));
+            Assert.That(walk.Prompt(130), Does.Contain("Turn around"));
+            Assert.That(walk.Prompt(140), Does.Contain("back"));
+            Assert.That(walk.Prompt(157), Does.Contain("stand still"));
+            Assert.That(walk.IsDue(159), Is.False);
+            Assert.That(walk.IsDue(160), Is.True);
+            walk.AddHead(new ImuSample(double.NaN, 0, 0, 9.81));
+            walk.AddAnkles(1, double.NaN, 0, 0, 0, 0, 0);
+            Assert.That(walk.HeadSamples, Is.Zero);
+            Assert.That(walk.AnklePoses, Is.Zero);
+        }
+
+        [Test]
+        public void AProfileRoundTripsAndDamageIsRefusedNamingTheFile()
+        {
+            var walk = Walk(Wearer());
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var profile = new CalibrationSession(Unlabelled(walk), left, right).Fit(Shipped, "calm-wearer");
+            string text = profile.Serialize();
+            Assert.That(WearerProfile.Parse(text).Serialize(), Is.EqualTo(text));
+
+            string folder = Path.Combine(Path.GetTempPath(), "headgait-profile-test-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var store = new WearerProfiles(folder);
+                store.Save(profile);
+                string path = store.PathOf("calm-wearer");
+                Assert.That(File.ReadAllText(path), Is.EqualTo(text));
+                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(1), "no temporary file left behind");
+
+                void Damaged(string from, string to, string expected)
+                {
+                    File.WriteAllText(path, text.Replace(from, to));
+                    var e = Assert.Throws<FormatException>(() => WearerProfile.Load(path));
+                    Assert.That(e.Message, Does.Contain(path).And.Contain(expected));
+                    var models = store.ModelsFor("calm-wearer", Shipped, out var p, out string note);
+                    Assert.That(p, Is.Null);
+                    Assert.That(models, Is.SameAs(Shipped), "a damaged profile falls back to the shipped models");
+                    Assert.That(note, Does.Contain(path));
+                }
+                Damaged(WearerProfile.Magic, "# headgait-wearer-profile v9", "first line");
+                Damaged("learned_gain=", "learned_gain=9", "learned_gain");
+                Damaged("cor.min_correlation=", "cor.min_correlation=x", "(cor.)");
+                Damaged("thr.floor=", "thr.floor=-1", "(thr.)");
+                Damaged("source=foot-references", "source=guess", "source");
+                File.WriteAllText(path, text.Substring(0, text.Length / 3));
+                Assert.Throws<FormatException>(() => WearerProfile.Load(path));
+
+                // Fitted against other models: the shipped models apply, and the note says why.
+                File.WriteAllText(path, text.Replace("base_models=" + profile.BaseModels, "base_models=0123456789abcdef"));
+                var stale = store.ModelsFor("calm-wearer", Shipped, out var none, out string staleNote);
+                Assert.That(none, Is.Null);
+                Assert.That(staleNote, Does.Contain("other models"));
+
+                store.Save(profile);
+                var adapted = store.ModelsFor("calm-wearer", Shipped, out var loaded, out string ok);
+                Assert.That(ok, Is.Null);
+                Assert.That(loaded.Serialize(), Is.EqualTo(text));
+                Assert.That(store.Wearers(), Is.EqualTo(new[] { "calm-wearer" }));
+                Assert.That(store.ModelsFor("someone-else", Shipped, out _, out string missing), Is.SameAs(Shipped));
+                Assert.That(missing, Does.Contain("no profile"));
+                Assert.That(store.Reset("calm-wearer"), Is.True);
+                Assert.That(store.ModelsFor("calm-wearer", Shipped, out _, out _), Is.SameAs(Shipped));
+                Assert.Throws<ArgumentException>(() => store.PathOf("../escape"));
+            }
+            finally
+            {
+                if (Directory.Exists(folder)) Directory.Delete(folder, true);
+            }
+        }
+
+        [Test]
+        public void ThePartsOfAProfileStayWithinTheirBounds()
+        {
+            var walk = Walk(Wearer());
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var p = new CalibrationSession(Unlabelled(walk), left, right).Fit(Shipped, "calm-wearer");
+            Assert.That(p.Correlation.MinCorrelation, Is.GreaterThanOrEqualTo(Shipped.Correlation.MinCorrelation - WearerAdaptation.MaxThresholdDrop));
+            Assert.That(p.Threshold.Floor, Is.GreaterThanOrEqualTo(WearerAdaptation.MinFloorShare * Shipped.Threshold.Floor - 1e-9));
+            Assert.That(p.LearnedGain, Is.InRange(WearerProfile.MinLearnedGain, WearerProfile.MaxLearnedGain));
+            double corShift = p.Correlation.Gate.Weights[WalkingGate.InputCount] - Shipped.Correlation.Gate.Weights[WalkingGate.InputCount];
+            Assert.That(corShift, Is.InRange(0, WearerProfile.MaxGateShift));
+        }
+
+        [Test]
+        public void CalibrationShowsNoMoreStandingWithHeadMovementAsWalking()
+        {
+            // The guard: a profile fitted on a calm, slow walker (whose gates open, whose templates and floor follow its
+            // gentle steps) still keeps the same person's standing with head movement standing.
+            var wearer = Wearer();
+            var walk = Walk(wearer);
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var session = new CalibrationSession(Unlabelled(walk), left, right);
+            var standing = new List<Recording>();
+            for (int k = 0; k < 3; k++) standing.Add(WalkingStreamGenerator.Generate("stand" + k, wearer, new StreamScript().Stand(20, 0.5 + 0.5 * k), 500UL + (ulong)k));
+            foreach (bool self in new[] { false, true })
+            {
+                var adapted = session.Fit(Shipped, "calm-wearer", self).Apply(Shipped);
+                foreach (var clf in GaitModels.Names)
+                {
+                    double Shown(GaitModels m) => GaitMetrics.Pool(standing.Select(r => ReplayEvaluator.Run(r, m.Create(clf, out _)).ClassifierMetrics)).StandingAsWalking;
+                    Assert.That(Shown(adapted), Is.LessThanOrEqualTo(Shown(Shipped)), $"{clf} ({(self ? "self-supervised" : "ankle trackers")})");
+                }
+            }
+        }
+
+        [Test]
+        public void OneWalkingGateScoresAlikeOnParallelThreads()
+        {
+            // The calibration benchmark and the glasses check replay many recordings at once with classifiers made from one
+            // set of models, so they share its walking gates; scratch buffers per gate let parallel windows overwrite each
+            // other's features (the same recordings scored differently from run to run).
+            var gate = Shipped.Threshold.Gate;
+            var recordings = Enumerable.Range(0, 4).Select(k => WalkingStreamGenerator.Generate("r" + k, GaitSubject.Random(40UL + (ulong)k),
+                new StreamScript().Stand(1).Walk(6, Foot.Left).Stand(2, 1.0), 90UL + (ulong)k)).ToList();
+            List<double> Scores(Recording r)
+            {
+                var scores = new List<double>();
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = gate.History });
+                foreach (var x in r.Samples) pre.Push(x.Imu, w => scores.Add(gate.Score(w)));
+                return scores;
+            }
+            var sequential = recordings.Select(Scores).ToList();
+            int differing = 0;
+            System.Threading.Tasks.Parallel.For(0, 32, new System.Threading.Tasks.ParallelOptions { MaxDegreeOfParallelism = 8 }, i =>
+            {
+                if (!Scores(recordings[i % recordings.Count]).SequenceEqual(sequential[i % recordings.Count])) System.Threading.Interlocked.Increment(ref differing);
+            });
+            Assert.That(differing, Is.Zero);
+        }
+
+        [Test]
+        public void SelfSupervisedLabelsComeFromStepsCorIsSureOf()
+        {
+            var walk = Walk(Wearer());
+            var sure = WearerAdaptation.SelfLabel(Shipped, Unlabelled(walk));
+            Assert.That(sure, Is.Not.Empty);
+            var truth = PhaseEvents.TruthContacts(walk);
+            var offsets = sure.SelectMany(r => PhaseEvents.TruthContacts(r)).Select(c => Math.Abs(PhaseEvents.OffsetFromNearest(truth, c.Time))).ToList();
+            Assert.That(offsets.Count, Is.GreaterThan(20));
+            Assert.That(GaitMetrics.Median(offsets), Is.LessThan(0.06), "the sure contacts are the walker's");
+            // The sure stretches lie where the walker walks.
+            var cursor = new LabelCursor(walk);
+            int samples = 0, standing = 0;
+            foreach (var r in sure)
+                foreach (var s in r.Samples)
+                {
+                    Assert.That(s.Left, Is.Not.EqualTo(GaitPhase.Standing), "a sure stretch is labelled walking throughout");
+                    samples++;
+                    if (cursor.TryLabelsAt(s.Imu.Time, out var t) && t.Left == GaitPhase.Standing) standing++;
+                }
+            Assert.That((double)standing / samples, Is.LessThan(0.05));
+        }
+    }
+}
