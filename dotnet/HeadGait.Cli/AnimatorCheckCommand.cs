@@ -5,6 +5,7 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using HeadGait.Tooling;
+using HeadGait.Unity;
 
 namespace HeadGait.Cli
 {
@@ -65,16 +66,17 @@ namespace HeadGait.Cli
                         fps, reading, total.Starts, total.MissedStarts, total.Stops, total.MissedStops, total.HeldFrames,
                         Median(total.StartLagFromCore) * 1000, Max(total.StartLagFromCore) * 1000,
                         Median(total.StartLagFromPublished) * 1000, Max(total.StartLagFromPublished) * 1000,
-                        (1.0 / fps + duration) * 1000, total.StartsCancelled));
+                        AnimatorStateCheck.LagLimit(asset, fps) * 1000, total.StartsCancelled));
                     if (listMisses)
                         foreach (var m in total.Misses) Console.WriteLine("  " + m);
                 }
             Console.WriteLine();
             Console.WriteLine("missed: Start or Finish Walk states of the core that the Animator never showed (as its state or its transition's");
             Console.WriteLine("destination) up to three frames after the core left them. lag: from the core's Start Walk (sensor time), and from");
-            Console.WriteLine("the frame the runner published it, to the Animator standing fully in a walking state; limit: one frame plus the");
-            Console.WriteLine("transition. held: Start/Finish frames the runner showed for a frame of their own. Readings: how Any State");
-            Console.WriteLine("transitions meet a transition in progress (see AnimatorLayerSimulator).");
+            Console.WriteLine("the frame the runner published it, to the Animator standing fully in a walking state; limit: the transition in");
+            Console.WriteLine("whole frames plus one (a start published on the frame another blend ends starts its own the next frame).");
+            Console.WriteLine("held: frames the runner showed a Start/Finish state the core had already left (each is shown for at least");
+            Console.WriteLine($"{GaitBatchRunner.MinTransientFrames} frames). Readings: how Any State transitions meet a transition in progress (see AnimatorLayerSimulator).");
             return missed == 0 ? 0 : 1;
         }
 

@@ -2,6 +2,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using HeadGait.Tooling;
+using HeadGait.Unity;
 using NUnit.Framework;
 
 namespace HeadGait.Tests
@@ -9,7 +10,7 @@ namespace HeadGait.Tests
     /// <summary>
     /// The shipped Animator Controller run as Unity's Animator runs it (<see cref="AnimatorLayerSimulator"/>), fed frame by
     /// frame by the component's runner: every walk start and stop the core makes reaches the avatar, at every frame rate,
-    /// and the avatar stands in a walking state within one frame plus the blend of the runner publishing the start.
+    /// and the avatar stands in a walking state within the blend in whole frames plus one of the runner publishing the start.
     /// </summary>
     public class AnimatorControllerTests
     {
@@ -30,14 +31,14 @@ namespace HeadGait.Tests
         internal static void CheckEveryStartAndStop(IReadOnlyList<Recording> recordings, int fps, AnyStateReading reading, AnimatorControllerAsset controller = null)
         {
             controller = controller ?? Shipped();
-            double limit = 1.0 / fps + AnimatorStateCheck.LongestStartTransition(controller) + 1e-6;
+            double limit = AnimatorStateCheck.LagLimit(controller, fps);
             var total = new AnimatorCheckResult { Fps = fps };
             foreach (var r in recordings) total.Add(AnimatorStateCheck.Run(r, Cor(), controller, fps, reading));
             Assert.That(total.Starts, Is.GreaterThan(0));
             Assert.That(total.Stops, Is.GreaterThan(0));
             Assert.That(total.Misses, Is.Empty, $"{total.MissedStarts} of {total.Starts} starts and {total.MissedStops} of {total.Stops} stops missed");
             Assert.That(total.StartsCancelled, Is.Zero, "every start reached a walking state");
-            Assert.That(total.StartLagFromPublished.Max(), Is.LessThanOrEqualTo(limit), "walking shown within one frame plus the blend");
+            Assert.That(total.StartLagFromPublished.Max(), Is.LessThanOrEqualTo(limit), "walking shown within the blend in whole frames plus one");
         }
 
         [Test]
@@ -53,6 +54,32 @@ namespace HeadGait.Tests
             bool any = Shipped().AnyStateTransitions.Count > 0;
             foreach (var reading in any ? new[] { AnyStateReading.AlwaysEvaluated, AnyStateReading.ObeyInterruptionSource } : new[] { AnyStateReading.AlwaysEvaluated })
                 CheckEveryStartAndStop(recordings, fps, reading);
+        }
+
+        /// <summary>
+        /// Why the runner shows a Start Walk state for <see cref="GaitBatchRunner.MinTransientFrames"/> frames: published for
+        /// one frame on the update the Animator ends its blend into Standing (bn1_walk-back_musical_001 at 72 fps), the start
+        /// is never shown; on the next update too, it is.
+        /// </summary>
+        [TestCase(1, false)]
+        [TestCase(GaitBatchRunner.MinTransientFrames, true)]
+        public void AStartPublishedAsABlendEndsIsShownOnlyIfStillPublishedNextFrame(int startFrames, bool shown)
+        {
+            const double dt = 1 / 72.0;
+            var animator = new AnimatorLayerSimulator(Shipped());
+            animator.Set(AnimatorParameters.State, (int)LocomotionState.Walking);
+            for (int i = 0; i < 20; i++) animator.Update(dt);
+            animator.Set(AnimatorParameters.State, (int)LocomotionState.Standing);
+            animator.Update(dt); // the blend into Standing starts
+            while (animator.TransitionProgress + dt / LocomotionController.TransitionDuration < 1 - 1e-9) animator.Update(dt);
+            bool seen = false;
+            for (int i = 0; i < startFrames + 10; i++)
+            {
+                animator.Set(AnimatorParameters.State, (int)(i < startFrames ? LocomotionState.StartWalkRight : LocomotionState.Walking));
+                animator.Update(dt); // the first of these ends the blend into Standing
+                seen |= animator.Shown.Name == GaitClips.Name(LocomotionState.StartWalkRight);
+            }
+            Assert.That(seen, Is.EqualTo(shown));
         }
 
         [Test]

@@ -122,6 +122,15 @@ namespace HeadGait.Tooling
             return result;
         }
 
+        /// <summary>
+        /// The most the Animator may take, from the frame the runner publishes a start to standing fully in a walking state
+        /// (s): the longest blend into a walking state in whole updates (a blend completes on the update its elapsed time
+        /// reaches its duration), plus one update, as a start published on the update the Animator ends another blend (into
+        /// Standing after a stop) starts its blend on the next (see <see cref="AnimatorLayerSimulator"/>).
+        /// </summary>
+        public static double LagLimit(AnimatorControllerAsset controller, int fps)
+            => (Math.Ceiling(LongestStartTransition(controller) * fps - 1e-6) + 1) / fps + 1e-6;
+
         /// <summary>The longest transition into a walking state (s, fixed durations; the lag the Animator itself adds).</summary>
         public static double LongestStartTransition(AnimatorControllerAsset controller)
             => controller.AnyStateTransitions.Concat(controller.States.SelectMany(s => s.Transitions))

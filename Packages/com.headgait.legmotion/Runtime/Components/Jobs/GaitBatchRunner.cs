@@ -17,9 +17,11 @@ namespace HeadGait.Unity
     /// Samples handed over while no frame runs (the component disabled, its source still pushing) wait in a backlog bounded
     /// to the newest <see cref="MaxBacklogSeconds"/> of sensor time, oldest dropped first (<see cref="DroppedBacklog"/>).
     /// The published frame is one frame behind the samples (the batch handed over this frame is read next frame).
-    /// A Start or Finish Walk state that the core entered and left within one batch (it often lasts a single 10 ms window)
-    /// is published for one frame of its own before the batch's latest frame, so the Animator sees every start and finish
-    /// (<see cref="HeldFrames"/>); otherwise it would see Standing -> Walking and never play the start clip.
+    /// A Start or Finish Walk state that the core entered (it often lasts a single 10 ms window) is published for at least
+    /// <see cref="MinTransientFrames"/> frames, held before the batch's latest frame when the core left it already, so the
+    /// Animator sees every start and finish (<see cref="HeldFrames"/>); otherwise it would see Standing -> Walking and
+    /// never play the start clip. One frame is not enough: on the update where a blend completes the Animator may start no
+    /// new transition, so a start published only then is skipped.
     /// Not thread-safe beyond that split: call everything except ExecuteBatch from the main thread.
     /// </summary>
     public sealed class GaitBatchRunner
@@ -32,6 +34,12 @@ namespace HeadGait.Unity
         /// 100), so a glitched timestamp inside a frame never drops that frame's good samples.
         /// </summary>
         public const int MinBacklogSamples = 256;
+
+        /// <summary>
+        /// Frames a Start or Finish Walk state is published at least: one more than the one update in which the Animator may
+        /// be completing a blend and start nothing (see the class summary).
+        /// </summary>
+        public const int MinTransientFrames = 2;
 
         /// <summary>Samples never exceeded, whatever their times say (2 s at 4 kHz): bounds the backlog of a stream whose
         /// timestamps are garbage.</summary>
@@ -64,8 +72,10 @@ namespace HeadGait.Unity
         LocomotionState batchState;
 
         // Main thread: frames still to show one per frame before the newest one (a queue in a fixed array).
-        readonly AnimatorFrame[] held = new AnimatorFrame[MaxHeld];
+        const int HeldCapacity = (MaxHeld + 1) * MinTransientFrames;
+        readonly AnimatorFrame[] held = new AnimatorFrame[HeldCapacity];
         int heldStart, heldCount;
+        int latestFrames;         // consecutive frames Latest.State has been published
         AnimatorFrame newest;
         GaitPrediction newestPrediction;
 
@@ -89,7 +99,8 @@ namespace HeadGait.Unity
         /// <summary>The prediction behind <see cref="Latest"/>.</summary>
         public GaitPrediction LatestPrediction { get; private set; }
 
-        /// <summary>Start/Finish frames published for a frame of their own because the batch left them again (see the class summary).</summary>
+        /// <summary>Frames published showing a Start/Finish state the core had already left, to show it for
+        /// <see cref="MinTransientFrames"/> frames (see the class summary).</summary>
         public long HeldFrames { get; private set; }
 
         /// <summary>Windows classified by completed batches (one per 100 Hz grid step of sensor time).</summary>
@@ -170,6 +181,7 @@ namespace HeadGait.Unity
             Latest = newest = AnimatorFrame.Standing(0);
             LatestPrediction = newestPrediction = default;
             heldCount = 0;
+            latestFrames = 0;
         }
 
         /// <summary>
@@ -239,16 +251,23 @@ namespace HeadGait.Unity
             string w = pipeline.Preprocessor.TakeWarning();
             if (w != null) warning = warning == null ? w : warning + "; " + w;
             if (batchGeneration != generation) return; // reset while it ran: its frames belong to the old stream
-            LocomotionState shown = heldCount > 0 ? held[(heldStart + heldCount - 1) % MaxHeld].State : Latest.State;
-            for (int i = 0; i < batchEnteredCount && heldCount < MaxHeld; i++)
+            LocomotionState shown = heldCount > 0 ? held[(heldStart + heldCount - 1) % HeldCapacity].State : Latest.State;
+            // A Start/Finish state published fewer frames than its minimum, which this batch left: show it again first.
+            if (heldCount == 0 && IsTransient(Latest.State) && latestFrames < MinTransientFrames)
+            {
+                LocomotionState next = batchEnteredCount > 0 ? batchEntered[0].State : batchLatest.State;
+                if (next != Latest.State)
+                    for (int k = latestFrames; k < MinTransientFrames; k++) Hold(Latest);
+            }
+            for (int i = 0; i < batchEnteredCount; i++)
             {
                 var f = batchEntered[i];
                 if (f.State == shown) continue;
-                held[(heldStart + heldCount++) % MaxHeld] = f;
+                for (int k = 0; k < MinTransientFrames; k++) Hold(f);
                 shown = f.State;
             }
-            // The newest frame shows the last one's state anyway.
-            if (heldCount > 0 && held[(heldStart + heldCount - 1) % MaxHeld].State == batchLatest.State) heldCount--;
+            // The newest frame shows the last one's state anyway (and is held again if the next batch leaves it at once).
+            while (heldCount > 0 && held[(heldStart + heldCount - 1) % HeldCapacity].State == batchLatest.State) heldCount--;
             newest = batchLatest;
             newestPrediction = batchPrediction;
             Windows += batchWindows;
@@ -260,19 +279,30 @@ namespace HeadGait.Unity
             }
         }
 
+        static bool IsTransient(LocomotionState s) => s != LocomotionState.Standing && s != LocomotionState.Walking;
+
+        void Hold(in AnimatorFrame frame)
+        {
+            if (heldCount < HeldCapacity) held[(heldStart + heldCount++) % HeldCapacity] = frame;
+        }
+
         /// <summary>Publishes the oldest held Start/Finish frame, or else the newest frame.</summary>
         void ShowNext()
         {
+            var before = Latest.State;
             if (heldCount > 0)
             {
                 Latest = held[heldStart];
-                heldStart = (heldStart + 1) % MaxHeld;
+                heldStart = (heldStart + 1) % HeldCapacity;
                 heldCount--;
                 HeldFrames++;
-                return;
             }
-            Latest = newest;
-            LatestPrediction = newestPrediction;
+            else
+            {
+                Latest = newest;
+                LatestPrediction = newestPrediction;
+            }
+            latestFrames = Latest.State == before ? latestFrames + 1 : 1;
         }
 
         /// <summary>The batch itself (worker thread): every sample through the pipeline, in order.</summary>
@@ -294,8 +324,7 @@ namespace HeadGait.Unity
         {
             if (frame.State == batchState) return;
             batchState = frame.State;
-            bool transient = frame.State != LocomotionState.Standing && frame.State != LocomotionState.Walking;
-            if (transient && batchEnteredCount < MaxHeld) batchEntered[batchEnteredCount++] = frame;
+            if (IsTransient(frame.State) && batchEnteredCount < MaxHeld) batchEntered[batchEnteredCount++] = frame;
         }
     }
 }
