@@ -140,7 +140,8 @@ namespace HeadGait
             public override bool CanRead => true;
             public override bool CanSeek => false;
             public override bool CanWrite => false;
-            public override long Length => throw new NotSupportedException();
+            // The file's length as it is now (readers that size their reads by it, ModelFile); reading stops at the limit anyway.
+            public override long Length => inner.Length;
             public override long Position { get => read; set => throw new NotSupportedException(); }
             public override void Flush() { }
             public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();

@@ -131,16 +131,15 @@ namespace HeadGait
         public static ModelFile Load(string path)
         {
             if (!File.Exists(path)) throw new ModelFormatException(path, "file not found");
-            FileStream stream;
+            Stream stream;
             try
             {
-                // Refused before reading when over the limit; a file of no size (empty, a device, a FIFO) is never opened, so
-                // a pipe cannot block the loader and /dev/zero cannot fill memory (InputLimits).
-                long length = new FileInfo(path).Length;
-                if (length == 0) throw new ModelFormatException(path, "is empty (or a device or pipe, which is read as empty)");
-                if (length > InputLimits.MaxModelBytes)
-                    throw new ModelFormatException(path, InputLimits.TooLarge(path, length, InputLimits.MaxModelBytes, "a model file").Problem);
-                stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read, 1);
+                // The size limit, and devices and pipes read as empty, as for every other input (InputLimits).
+                stream = InputLimits.Open(path, InputLimits.MaxModelBytes, "a model file");
+            }
+            catch (InputLimitException e)
+            {
+                throw new ModelFormatException(path, e.Problem);
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
@@ -151,6 +150,10 @@ namespace HeadGait
                 try
                 {
                     return Parse(stream, path);
+                }
+                catch (InputLimitException e)
+                {
+                    throw new ModelFormatException(path, e.Problem);
                 }
                 catch (IOException e)
                 {
