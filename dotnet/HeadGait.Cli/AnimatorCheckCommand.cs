@@ -53,31 +53,36 @@ namespace HeadGait.Cli
 
             Console.WriteLine($"animator-check: {recordings.Count} recording(s), classifier {name}, controller {controllerFile}");
             Console.WriteLine($"longest transition into a walking state: {duration * 1000:F0} ms");
-            Console.WriteLine("fps  reading                  starts missed  stops missed  held  lag_core med/max ms  lag_published med/max ms  limit ms  cancelled");
-            int missed = 0;
+            Console.WriteLine("fps  reading                  starts missed  stops missed  held  lag_core med/max ms  limit ms  lag_published med/max ms  limit ms  lag_grid med/max ms  cancelled");
+            int missed = 0, late = 0;
             foreach (var reading in new[] { AnyStateReading.AlwaysEvaluated, AnyStateReading.ObeyInterruptionSource })
                 foreach (int fps in rates)
                 {
                     var total = new AnimatorCheckResult { Fps = fps };
                     foreach (var r in recordings) total.Add(AnimatorStateCheck.Run(r, loaded.Create(name, out _), asset, fps, reading));
                     missed += total.MissedStarts + total.MissedStops;
+                    double limit = AnimatorStateCheck.LagLimit(asset, fps), publishedLimit = AnimatorStateCheck.PublishedLagLimit(asset, fps);
+                    if (Max(total.StartLagFromCore) > limit || Max(total.StartLagFromPublished) > publishedLimit) late++;
                     Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                        "{0,3}  {1,-23} {2,7} {3,6} {4,6} {5,6} {6,5}  {7,8:F0} / {8,-8:F0}  {9,12:F0} / {10,-10:F0} {11,8:F0} {12,10}",
+                        "{0,3}  {1,-23} {2,7} {3,6} {4,6} {5,6} {6,5}  {7,8:F0} / {8,-8:F0} {9,8:F0}  {10,12:F0} / {11,-10:F0} {12,8:F0}  {13,8:F0} / {14,-8:F0} {15,10}",
                         fps, reading, total.Starts, total.MissedStarts, total.Stops, total.MissedStops, total.HeldFrames,
-                        Median(total.StartLagFromCore) * 1000, Max(total.StartLagFromCore) * 1000,
-                        Median(total.StartLagFromPublished) * 1000, Max(total.StartLagFromPublished) * 1000,
-                        AnimatorStateCheck.LagLimit(asset, fps) * 1000, total.StartsCancelled));
+                        Median(total.StartLagFromCore) * 1000, Max(total.StartLagFromCore) * 1000, limit * 1000,
+                        Median(total.StartLagFromPublished) * 1000, Max(total.StartLagFromPublished) * 1000, publishedLimit * 1000,
+                        Median(total.StartLagFromGrid) * 1000, Max(total.StartLagFromGrid) * 1000, total.StartsCancelled));
                     if (listMisses)
                         foreach (var m in total.Misses) Console.WriteLine("  " + m);
                 }
             Console.WriteLine();
             Console.WriteLine("missed: Start or Finish Walk states of the core that the Animator never showed (as its state or its transition's");
-            Console.WriteLine("destination) up to three frames after the core left them. lag: from the core's Start Walk (sensor time), and from");
-            Console.WriteLine("the frame the runner published it, to the Animator standing fully in a walking state; limit: the transition in");
-            Console.WriteLine("whole frames plus one (a start published on the frame another blend ends starts its own the next frame).");
+            Console.WriteLine("destination) up to three frames after the core left them. lag_core: from the core entering Start Walk (the");
+            Console.WriteLine("sensor time of the sample that completed its window) to the Animator standing fully in a walking state; limit:");
+            Console.WriteLine("one frame plus the transition in whole frames. lag_published: from the frame the runner published the start;");
+            Console.WriteLine("limit: the transition in whole frames. lag_grid: from the Start Walk window's 100 Hz grid time, which the");
+            Console.WriteLine("resampler can produce only once the next sample has come (up to one sample interval more; no limit).");
             Console.WriteLine("held: frames the runner showed a Start/Finish state the core had already left (each is shown for at least");
             Console.WriteLine($"{GaitBatchRunner.MinTransientFrames} frames). Readings: how Any State transitions meet a transition in progress (see AnimatorLayerSimulator).");
-            return missed == 0 ? 0 : 1;
+            if (late > 0) Console.WriteLine($"{late} row(s) with a start lag over its limit.");
+            return missed == 0 && late == 0 ? 0 : 1;
         }
 
         static double Median(List<double> v) => v.Count == 0 ? double.NaN : v.OrderBy(x => x).ElementAt(v.Count / 2);

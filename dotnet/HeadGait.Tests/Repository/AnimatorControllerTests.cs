@@ -10,7 +10,7 @@ namespace HeadGait.Tests
     /// <summary>
     /// The shipped Animator Controller run as Unity's Animator runs it (<see cref="AnimatorLayerSimulator"/>), fed frame by
     /// frame by the component's runner: every walk start and stop the core makes reaches the avatar, at every frame rate,
-    /// and the avatar stands in a walking state within the blend in whole frames plus one of the runner publishing the start.
+    /// and the avatar stands in a walking state within one frame plus the blend in whole frames of the core entering Start Walk.
     /// </summary>
     public class AnimatorControllerTests
     {
@@ -31,14 +31,18 @@ namespace HeadGait.Tests
         internal static void CheckEveryStartAndStop(IReadOnlyList<Recording> recordings, int fps, AnyStateReading reading, AnimatorControllerAsset controller = null)
         {
             controller = controller ?? Shipped();
-            double limit = AnimatorStateCheck.LagLimit(controller, fps);
             var total = new AnimatorCheckResult { Fps = fps };
             foreach (var r in recordings) total.Add(AnimatorStateCheck.Run(r, Cor(), controller, fps, reading));
             Assert.That(total.Starts, Is.GreaterThan(0));
             Assert.That(total.Stops, Is.GreaterThan(0));
             Assert.That(total.Misses, Is.Empty, $"{total.MissedStarts} of {total.Starts} starts and {total.MissedStops} of {total.Stops} stops missed");
             Assert.That(total.StartsCancelled, Is.Zero, "every start reached a walking state");
-            Assert.That(total.StartLagFromPublished.Max(), Is.LessThanOrEqualTo(limit), "walking shown within the blend in whole frames plus one");
+            // Regression: 136/150/131/120 ms at 60/72/90/120 fps on real-train against 117/125/111/108 (the runner published a
+            // frame's batch the next frame, and a start published as the blend into Standing ended waited a frame more).
+            Assert.That(total.StartLagFromCore.Max(), Is.LessThanOrEqualTo(AnimatorStateCheck.LagLimit(controller, fps)),
+                "walking shown within one frame plus the blend in whole frames of the core entering Start Walk");
+            Assert.That(total.StartLagFromPublished.Max(), Is.LessThanOrEqualTo(AnimatorStateCheck.PublishedLagLimit(controller, fps)),
+                "walking shown within the blend in whole frames of the runner publishing the start");
         }
 
         [Test]
@@ -57,27 +61,30 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
-        /// Why the runner shows a Start Walk state for <see cref="GaitBatchRunner.MinTransientFrames"/> frames: published for
-        /// one frame on the update the Animator ends its blend into Standing (bn1_walk-back_musical_001 at 72 fps), the start
-        /// is never shown; on the next update too, it is.
+        /// A start published on the update the Animator ends its blend into Standing (interruptible by Standing's transitions)
+        /// interrupts it on that update (bn1_walk-left_feminine_001 at 60 fps waited a frame more before); one published on
+        /// the update an uninterruptible blend (into a Start Walk) ends is taken only on the next update, which is why the
+        /// runner shows a Start/Finish state for <see cref="GaitBatchRunner.MinTransientFrames"/> frames.
         /// </summary>
-        [TestCase(1, false)]
-        [TestCase(GaitBatchRunner.MinTransientFrames, true)]
-        public void AStartPublishedAsABlendEndsIsShownOnlyIfStillPublishedNextFrame(int startFrames, bool shown)
+        [TestCase(LocomotionState.Standing, LocomotionState.StartWalkRight, 1, true)]
+        [TestCase(LocomotionState.StartWalkLeft, LocomotionState.FinishWalkRight, 1, false)]
+        [TestCase(LocomotionState.StartWalkLeft, LocomotionState.FinishWalkRight, GaitBatchRunner.MinTransientFrames, true)]
+        public void AStatePublishedAsABlendEndsIsShown(LocomotionState blendInto, LocomotionState published, int frames, bool shown)
         {
             const double dt = 1 / 72.0;
             var animator = new AnimatorLayerSimulator(Shipped());
             animator.Set(AnimatorParameters.State, (int)LocomotionState.Walking);
             for (int i = 0; i < 20; i++) animator.Update(dt);
-            animator.Set(AnimatorParameters.State, (int)LocomotionState.Standing);
-            animator.Update(dt); // the blend into Standing starts
+            animator.Set(AnimatorParameters.State, (int)blendInto);
+            animator.Update(dt); // the blend starts
             while (animator.TransitionProgress + dt / LocomotionController.TransitionDuration < 1 - 1e-9) animator.Update(dt);
             bool seen = false;
-            for (int i = 0; i < startFrames + 10; i++)
+            for (int i = 0; i < frames + 10; i++)
             {
-                animator.Set(AnimatorParameters.State, (int)(i < startFrames ? LocomotionState.StartWalkRight : LocomotionState.Walking));
-                animator.Update(dt); // the first of these ends the blend into Standing
-                seen |= animator.Shown.Name == GaitClips.Name(LocomotionState.StartWalkRight);
+                animator.Set(AnimatorParameters.State, (int)(i < frames ? published : LocomotionState.Walking));
+                animator.Update(dt); // the first of these is the blend's last update
+                seen |= animator.Shown.Name == GaitClips.Name(published);
+                if (i == 0 && shown && frames == 1) Assert.That(animator.Shown.Name, Is.EqualTo(GaitClips.Name(published)), "on the blend's last update");
             }
             Assert.That(seen, Is.EqualTo(shown));
         }

@@ -37,8 +37,10 @@ namespace HeadGait.Tooling
     /// progress) unless Can Transition To Self is on (AnimatorStateTransition.canTransitionToSelf).</item>
     /// <item>Duration: seconds with Has Fixed Duration, else a fraction of the source state's length (clip length / speed)
     /// (AnimatorStateTransition.hasFixedDuration, duration). The destination starts at the transition offset (normalized).
-    /// A transition completes on the update where its elapsed time reaches the duration; no new transition starts in that
-    /// update (conservative: a completion never shortens the measured lag).</item>
+    /// The update that starts a transition does not advance it; it completes on the update where its elapsed time reaches
+    /// the duration, so a blend of d seconds takes ceil(d * fps) updates after the one that started it. On that update an
+    /// interruption that holds (see below) still starts, as on every update the transition runs; otherwise the new state's
+    /// own transitions are first evaluated on the next update (conservative: it never shortens a measured lag).</item>
     /// <item>Interruption (TransitionInterruptionSource in StateMachine.bindings.cs; ScriptReference pages of its values; the
     /// 2016 blog): None: the transition runs to its end; Source: the source state's transitions may interrupt it, with
     /// Ordered Interruption only those listed before it; Destination: the destination state's transitions;
@@ -103,13 +105,10 @@ namespace HeadGait.Tooling
             {
                 elapsed += dt;
                 nextTime = TimeOf(active.Destination, nextTime + dt * active.Destination.Speed / Math.Max(1e-6, active.Destination.ClipLength));
-                if (elapsed >= durationSeconds - TimeTolerance)
-                {
-                    Finish();
-                    return;
-                }
+                // An interruptible transition is interruptible on every update it runs, its last included.
                 var interruption = FirstInterruption();
                 if (interruption != null) Start(interruption);
+                else if (elapsed >= durationSeconds - TimeTolerance) Finish();
                 return;
             }
             var next = First(asset.AnyStateTransitions, Current, null) ?? First(Current.Transitions, Current, null);

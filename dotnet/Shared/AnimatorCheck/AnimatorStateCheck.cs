@@ -10,8 +10,12 @@ namespace HeadGait.Tooling
     {
         public int Fps;
         public int Starts, Stops, MissedStarts, MissedStops;
-        /// <summary>Seconds from the core entering Start Walk (sensor time) to the Animator standing fully in a walking state.</summary>
+        /// <summary>Seconds from the core entering Start Walk (the sensor time of the sample whose arrival produced it) to the
+        /// Animator standing fully in a walking state.</summary>
         public readonly List<double> StartLagFromCore = new List<double>();
+        /// <summary>As <see cref="StartLagFromCore"/>, from the Start Walk frame's own time: the 100 Hz grid step it classified,
+        /// which the resampler can only produce once the next sensor sample has come (up to one sample interval later).</summary>
+        public readonly List<double> StartLagFromGrid = new List<double>();
         /// <summary>Seconds from the frame the runner first published the start to the Animator standing fully in a walking state.</summary>
         public readonly List<double> StartLagFromPublished = new List<double>();
         /// <summary>Starts the core cancelled before the Animator arrived (no lag).</summary>
@@ -27,6 +31,7 @@ namespace HeadGait.Tooling
             MissedStops += other.MissedStops;
             StartsCancelled += other.StartsCancelled;
             StartLagFromCore.AddRange(other.StartLagFromCore);
+            StartLagFromGrid.AddRange(other.StartLagFromGrid);
             StartLagFromPublished.AddRange(other.StartLagFromPublished);
             Misses.AddRange(other.Misses);
             HeldFrames += other.HeldFrames;
@@ -35,7 +40,7 @@ namespace HeadGait.Tooling
 
     /// <summary>
     /// Replays a recording as the drop-in prefab runs it: frames at a fixed rate, each handing the samples up to its time
-    /// to <see cref="GaitBatchRunner"/> and stepping it once (a batch per frame, published the next frame), then writing the
+    /// to <see cref="GaitBatchRunner"/> and stepping it once (a batch per frame, published in that frame), then writing the
     /// published frame to the Animator parameters and updating the shipped controller in <see cref="AnimatorLayerSimulator"/>.
     /// Every Start Walk and Finish Walk state the core enters is a walk start or stop; it is missed when the Animator never
     /// shows that state (as its state or its transition's destination) between the core entering it and three frames after
@@ -89,6 +94,7 @@ namespace HeadGait.Tooling
             }
 
             var result = new AnimatorCheckResult { Fps = fps, HeldFrames = runner.HeldFrames };
+            int known = 0;
             for (int i = 0; i < coreChanges.Count; i++)
             {
                 var (t0, state) = coreChanges[i];
@@ -116,20 +122,29 @@ namespace HeadGait.Tooling
                     result.StartsCancelled++;
                     continue;
                 }
-                result.StartLagFromCore.Add(frames[arrived].Time - t0);
+                // The grid step t0 is interpolated between the samples around it, so the core enters the state when the first
+                // sample at or after t0 arrives.
+                while (known < samples.Count && samples[known].Imu.Time < t0) known++;
+                double entered = known < samples.Count ? samples[known].Imu.Time : t0;
+                result.StartLagFromCore.Add(frames[arrived].Time - entered);
+                result.StartLagFromGrid.Add(frames[arrived].Time - t0);
                 result.StartLagFromPublished.Add(frames[arrived].Time - frames[published].Time);
             }
             return result;
         }
 
         /// <summary>
-        /// The most the Animator may take, from the frame the runner publishes a start to standing fully in a walking state
-        /// (s): the longest blend into a walking state in whole updates (a blend completes on the update its elapsed time
-        /// reaches its duration), plus one update, as a start published on the update the Animator ends another blend (into
-        /// Standing after a stop) starts its blend on the next (see <see cref="AnimatorLayerSimulator"/>).
+        /// The most a walk start may take, from the core entering Start Walk to the Animator standing fully in a walking state
+        /// (s): one frame (the frame that brings the sample which completes the Start Walk window comes up to one frame after
+        /// it) plus the longest blend into a walking state in whole updates (see <see cref="AnimatorLayerSimulator"/>).
         /// </summary>
         public static double LagLimit(AnimatorControllerAsset controller, int fps)
             => (Math.Ceiling(LongestStartTransition(controller) * fps - 1e-6) + 1) / fps + 1e-6;
+
+        /// <summary>The most from the frame the runner publishes a start to the Animator standing in a walking state (s): the
+        /// longest blend into a walking state in whole updates.</summary>
+        public static double PublishedLagLimit(AnimatorControllerAsset controller, int fps)
+            => Math.Ceiling(LongestStartTransition(controller) * fps - 1e-6) / fps + 1e-6;
 
         /// <summary>The longest transition into a walking state (s, fixed durations; the lag the Animator itself adds).</summary>
         public static double LongestStartTransition(AnimatorControllerAsset controller)

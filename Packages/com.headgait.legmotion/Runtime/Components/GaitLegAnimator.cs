@@ -11,8 +11,8 @@ namespace HeadGait.Unity
     /// <see cref="AnimatorParameters"/>, overridable here. Parameters the controller lacks are reported once and skipped.
     /// <para>
     /// Samples pushed by the sensor source are classified at 100 Hz of sensor time on a Unity job
-    /// (<see cref="GaitBatchRunner"/>, <see cref="GaitJobScheduler"/>). Each Update completes last frame's job, writes its
-    /// latest frame to the Animator and schedules the samples that arrived since. Update (not LateUpdate) because the
+    /// (<see cref="GaitBatchRunner"/>, <see cref="GaitJobScheduler"/>). Each Update runs the samples that arrived since the
+    /// last frame as one job, waits for it and writes its latest frame to the Animator. Update (not LateUpdate) because the
     /// Animator evaluates between Update and LateUpdate; the execution order puts this after sources that push in their
     /// own Update. While the component is disabled, pushed samples wait for its next Update in a backlog bounded to the
     /// newest 2 s (<see cref="GaitBatchRunner.DroppedBacklog"/> counts the older ones dropped).
@@ -150,7 +150,6 @@ namespace HeadGait.Unity
         public bool SetLearnedEvaluator(ILearnedEvaluator evaluator, bool mainThreadOnly)
         {
             if (!(Runner.Pipeline.Classifier is LearnedClassifier learned)) return false;
-            runner.Complete(scheduler); // never swap the evaluator under a running batch
             learned.Evaluator = evaluator;
             scheduler = evaluator != null && mainThreadOnly ? new InlineBatchScheduler(runner) : (IGaitBatchScheduler)jobScheduler;
             return true;
@@ -197,18 +196,11 @@ namespace HeadGait.Unity
             writer.Write(f, sink);
         }
 
-        void OnDisable()
-        {
-            // Never leave a job running against a component that may be destroyed.
-            if (runner != null) runner.Complete(scheduler);
-        }
-
         void OnDestroy() => ReleaseRunner();
 
         void ReleaseRunner()
         {
             if (runner == null) return;
-            runner.Complete(scheduler);
             jobScheduler.Dispose();
             runner = null;
             jobScheduler = null;

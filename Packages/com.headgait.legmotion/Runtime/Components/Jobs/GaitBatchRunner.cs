@@ -3,12 +3,14 @@ using System;
 namespace HeadGait.Unity
 {
     /// <summary>
-    /// Runs a <see cref="GaitPipeline"/> off the main thread in one batch per frame and decides what runs when; plain C#,
-    /// so it is tested without Unity (the Unity job is a thin wrapper, <see cref="GaitJobScheduler"/>).
+    /// Runs a <see cref="GaitPipeline"/> in one batch per frame (on a Unity job or inline) and decides what is shown when;
+    /// plain C#, so it is tested without Unity (the Unity job is a thin wrapper, <see cref="GaitJobScheduler"/>).
     /// <list type="bullet">
     /// <item>Main thread: <see cref="Push"/> hands each sensor sample over (into a buffer that is reused, so no allocation
-    /// once it has grown to the largest batch seen); <see cref="Step"/>, once per frame, completes the batch scheduled last
-    /// frame, publishes its latest animator frame (<see cref="Latest"/>) and schedules the samples handed over since.</item>
+    /// once it has grown to the largest batch seen); <see cref="Step"/>, once per frame, schedules the samples handed over
+    /// since the last frame, completes that batch and publishes its animator frame (<see cref="Latest"/>) in the same frame,
+    /// so the Animator evaluates it this frame. The frame waits for its batch: a few 10 ms windows, microseconds for COR
+    /// (README, CPU row), where publishing next frame instead added a whole frame to every start the avatar shows.</item>
     /// <item>Worker: <see cref="ExecuteBatch"/> feeds the batch to the pipeline, which resamples to its 100 Hz grid and
     /// classifies every grid step, so classification follows sensor time, not the frame rate (a learned classifier scores
     /// the batch's windows together: <see cref="GaitPipeline.PushBatch"/>).</item>
@@ -16,13 +18,13 @@ namespace HeadGait.Unity
     /// A frame never waits for samples: a frame without new samples schedules nothing and shows the last published frame.
     /// Samples handed over while no frame runs (the component disabled, its source still pushing) wait in a backlog bounded
     /// to the newest <see cref="MaxBacklogSeconds"/> of sensor time, oldest dropped first (<see cref="DroppedBacklog"/>).
-    /// The published frame is one frame behind the samples (the batch handed over this frame is read next frame).
     /// A Start or Finish Walk state that the core entered (it often lasts a single 10 ms window) is published for at least
     /// <see cref="MinTransientFrames"/> frames, held before the batch's latest frame when the core left it already, so the
     /// Animator sees every start and finish (<see cref="HeldFrames"/>); otherwise it would see Standing -> Walking and
-    /// never play the start clip. One frame is not enough: on the update where a blend completes the Animator may start no
-    /// new transition, so a start published only then is skipped.
-    /// Not thread-safe beyond that split: call everything except ExecuteBatch from the main thread.
+    /// never play the start clip. One frame is not enough: on the update where a blend that cannot be interrupted (the
+    /// shipped controller's blends into Start Walk) completes, the Animator starts no new transition, so a state published
+    /// only then is skipped.
+    /// Call everything except ExecuteBatch from the main thread.
     /// </summary>
     public sealed class GaitBatchRunner
     {
@@ -52,11 +54,7 @@ namespace HeadGait.Unity
         ImuSample[] batch;
         int batchCount;
 
-        bool inFlight;
-        bool stepping;            // inside Step, which publishes after completing
-        int generation;           // bumped by Reset: a batch of an older generation is discarded
         int batchGeneration;
-        bool resetPipeline;       // Reset came while a batch ran: reset the pipeline before the next one
         double sourceLag;
         double lastSamples = double.NaN; // the frame time samples last came, for the silence rule
         string warning;
@@ -90,7 +88,7 @@ namespace HeadGait.Unity
             pipeline.FrameProduced += OnFrame;
         }
 
-        /// <summary>The pipeline the batches run; read it only while <see cref="InFlight"/> is false.</summary>
+        /// <summary>The pipeline the batches run; read it on the main thread outside <see cref="Step"/>.</summary>
         public GaitPipeline Pipeline => pipeline;
 
         /// <summary>The animator frame of the last completed batch: what the avatar shows.</summary>
@@ -108,9 +106,6 @@ namespace HeadGait.Unity
 
         /// <summary>Samples handed over and not yet scheduled.</summary>
         public int Pending => pendingCount;
-
-        /// <summary>True between scheduling a batch and completing it.</summary>
-        public bool InFlight => inFlight;
 
         /// <summary>Samples refused at hand-over because a value was NaN or infinite (the pipeline would skip them too).</summary>
         public int RejectedNotFinite { get; private set; }
@@ -168,16 +163,14 @@ namespace HeadGait.Unity
         }
 
         /// <summary>
-        /// The stream starts over (a recording restarts, the source changes): drops what was handed over, discards the batch
-        /// in flight when it completes, resets the pipeline before the next batch and shows the standing pose at once.
+        /// The stream starts over (a recording restarts, the source changes): drops what was handed over, resets the pipeline
+        /// and shows the standing pose at once.
         /// </summary>
         public void Reset()
         {
             pendingStart = 0;
             pendingCount = 0;
-            generation++;
-            if (inFlight) resetPipeline = true;
-            else pipeline.Reset();
+            pipeline.Reset();
             Latest = newest = AnimatorFrame.Standing(0);
             LatestPrediction = newestPrediction = default;
             heldCount = 0;
@@ -185,53 +178,30 @@ namespace HeadGait.Unity
         }
 
         /// <summary>
-        /// The frame's work (main thread): completes last frame's batch and publishes its latest frame (or a Start/Finish frame
-        /// it passed through, held for this one frame), then schedules the samples handed over since, if any. Never waits on
-        /// anything scheduled in this call. <paramref name="now"/> is the frame's real time (s; Unity's unscaled time): when no
-        /// sample has come for longer than the preprocessor's MaxGap (0.1 s, the hole that restarts the window) the avatar
-        /// stands, rather than hold its last walking frame until new samples arrive. NaN leaves that rule out.
+        /// The frame's work (main thread): runs the samples handed over since the last frame as one batch (scheduled, then
+        /// completed) and publishes its latest frame, or first a Start/Finish frame the batch passed through, held for
+        /// <see cref="MinTransientFrames"/> frames. <paramref name="now"/> is the frame's real time (s; Unity's unscaled
+        /// time): when no sample has come for longer than the preprocessor's MaxGap (0.1 s, the hole that restarts the
+        /// window) the avatar stands, rather than hold its last walking frame until new samples arrive. NaN leaves that
+        /// rule out.
         /// </summary>
         public void Step(IGaitBatchScheduler scheduler, double now = double.NaN)
         {
             if (scheduler == null) throw new ArgumentNullException(nameof(scheduler));
-            stepping = true;
-            try
+            bool samples = pendingCount > 0;
+            if (samples)
             {
-                Complete(scheduler);
-            }
-            finally
-            {
-                stepping = false;
+                lastSamples = now;
+                RunBatch(scheduler);
             }
             ShowNext();
-            if (pendingCount == 0)
+            if (!samples && heldCount == 0 && now - lastSamples > pipeline.Preprocessor.Settings.MaxGap
+                && Latest.State != LocomotionState.Standing)
             {
-                if (!inFlight && heldCount == 0 && now - lastSamples > pipeline.Preprocessor.Settings.MaxGap
-                    && Latest.State != LocomotionState.Standing)
-                {
-                    pipeline.Settle(pipeline.LatestPrediction.Time);
-                    Latest = newest = pipeline.Latest;
-                    LatestPrediction = newestPrediction = pipeline.LatestPrediction;
-                }
-                return;
+                pipeline.Settle(pipeline.LatestPrediction.Time);
+                Latest = newest = pipeline.Latest;
+                LatestPrediction = newestPrediction = pipeline.LatestPrediction;
             }
-            lastSamples = now;
-            if (resetPipeline)
-            {
-                pipeline.Reset();
-                resetPipeline = false;
-            }
-            pipeline.SourceLag = sourceLag;
-            MoveBacklogToFront(); // the batch reads from index 0
-            // Swap buffers: the batch owns the samples now, new hand-overs go to the other buffer.
-            var full = pending;
-            pending = batch;
-            batch = full;
-            batchCount = pendingCount;
-            pendingCount = 0;
-            batchGeneration = generation;
-            inFlight = true;
-            scheduler.Schedule();
         }
 
         /// <summary>A clock or rate problem the pipeline met (each kind once), for the main thread to log; null when none is new.</summary>
@@ -242,15 +212,20 @@ namespace HeadGait.Unity
             return w;
         }
 
-        /// <summary>Completes the batch in flight, if any, and publishes it (main thread; on disable, before a rebuild).</summary>
-        public void Complete(IGaitBatchScheduler scheduler)
+        void RunBatch(IGaitBatchScheduler scheduler)
         {
-            if (!inFlight) return;
+            pipeline.SourceLag = sourceLag;
+            MoveBacklogToFront(); // the batch reads from index 0
+            // Swap buffers: the batch owns the samples now, hand-overs go to the other buffer.
+            var full = pending;
+            pending = batch;
+            batch = full;
+            batchCount = pendingCount;
+            pendingCount = 0;
+            scheduler.Schedule();
             scheduler.Complete();
-            inFlight = false;
             string w = pipeline.Preprocessor.TakeWarning();
             if (w != null) warning = warning == null ? w : warning + "; " + w;
-            if (batchGeneration != generation) return; // reset while it ran: its frames belong to the old stream
             LocomotionState shown = heldCount > 0 ? held[(heldStart + heldCount - 1) % HeldCapacity].State : Latest.State;
             // A Start/Finish state published fewer frames than its minimum, which this batch left: show it again first.
             if (heldCount == 0 && IsTransient(Latest.State) && latestFrames < MinTransientFrames)
@@ -271,12 +246,6 @@ namespace HeadGait.Unity
             newest = batchLatest;
             newestPrediction = batchPrediction;
             Windows += batchWindows;
-            // Outside Step (on disable, before a rebuild) nothing waits for the next frame: show the newest frame now.
-            if (!stepping)
-            {
-                heldCount = 0;
-                ShowNext();
-            }
         }
 
         static bool IsTransient(LocomotionState s) => s != LocomotionState.Standing && s != LocomotionState.Walking;
@@ -305,7 +274,7 @@ namespace HeadGait.Unity
             latestFrames = Latest.State == before ? latestFrames + 1 : 1;
         }
 
-        /// <summary>The batch itself (worker thread): every sample through the pipeline, in order.</summary>
+        /// <summary>The batch itself (a job's worker thread, or inline): every sample through the pipeline, in order.</summary>
         public void ExecuteBatch()
         {
             long before = pipeline.Windows;

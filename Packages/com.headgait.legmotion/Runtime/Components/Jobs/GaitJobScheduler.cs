@@ -37,7 +37,7 @@ namespace HeadGait.Unity
             job = default;
         }
 
-        /// <summary>Completes any batch in flight and frees the handle.</summary>
+        /// <summary>Completes any batch still running and frees the handle.</summary>
         public void Dispose()
         {
             job.Complete();
