@@ -32,6 +32,7 @@ namespace HeadGait.Cli
 
         static int Run(string[] files, string fpsList, string classifierName, string controllerPath, bool listMisses)
         {
+            var rates = OptionValues.FrameRates(fpsList ?? "", "--fps", 1, 1000, whole: true).Select(r => (int)r).ToList();
             string models = SamplePaths.FindModelsFolder() ?? throw new UsageException("package folder not found");
             string package = Path.GetDirectoryName(models);
             List<string> paths;
@@ -41,9 +42,6 @@ namespace HeadGait.Cli
                 paths = SamplePaths.List(folder, "eval").Concat(SamplePaths.List(folder, "train")).ToList();
             }
             else paths = Inputs.Expand(files, "*.csv");
-            var rates = fpsList.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)
-                .Select(s => int.TryParse(s, NumberStyles.Integer, CultureInfo.InvariantCulture, out int v) && v > 0 ? v : throw new UsageException($"--fps: '{s}' is not a frame rate"))
-                .ToList();
             string name = Classifiers.Parse(classifierName).Single();
             var loaded = Classifiers.Load(models);
             string controllerFile = controllerPath ?? Path.Combine(package, GaitAssetFiles.Controller);

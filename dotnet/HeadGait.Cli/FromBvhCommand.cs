@@ -45,7 +45,7 @@ namespace HeadGait.Cli
                     Seed = parse.GetValue(seed),
                 };
                 if (parse.GetValue(noNoise)) s.BiasSd = s.NoiseSd = s.JitterSd = s.PositionNoiseSd = s.RotationNoiseDegrees = s.FrameJitterSd = 0;
-                var rates = FrameRates(parse.GetValue(pose));
+                var rates = OptionValues.FrameRates(parse.GetValue(pose), "--pose", 10, 1000);
                 string outDir = parse.GetValue(output);
                 var files = Inputs.Expand(parse.GetValue(inputs), "*.bvh");
                 int failed = 0;
@@ -78,18 +78,6 @@ namespace HeadGait.Cli
                 return failed == 0 ? 0 : 1;
             });
             return command;
-        }
-
-        static List<double> FrameRates(string list)
-        {
-            var rates = new List<double>();
-            foreach (var part in (list ?? "").Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
-            {
-                if (!double.TryParse(part, System.Globalization.NumberStyles.Float, System.Globalization.CultureInfo.InvariantCulture, out double r) || r < 10 || r > 1000)
-                    throw new UsageException($"--pose: '{part}' is not a frame rate of 10 to 1000 Hz");
-                rates.Add(r);
-            }
-            return rates;
         }
 
         static double Units(string u)

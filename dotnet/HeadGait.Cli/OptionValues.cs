@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 
@@ -34,6 +35,26 @@ namespace HeadGait.Cli
                 if (s != CrossValidation.ByStyle && s != CrossValidation.ByFile && !(allowNone && s == "none"))
                     throw new UsageException($"{option}: unknown scheme '{s}' ({allowed})");
             return schemes;
+        }
+
+        /// <summary>
+        /// A comma-separated list of frame rates (Hz), each from <paramref name="min"/> to <paramref name="max"/> and, with
+        /// <paramref name="whole"/>, a whole number. Null (the option left out) is no rates; given, the list must name one.
+        /// </summary>
+        public static List<double> FrameRates(string list, string option, double min, double max, bool whole = false)
+        {
+            var rates = new List<double>();
+            if (list == null) return rates;
+            string kind = whole ? "a whole frame rate" : "a frame rate";
+            foreach (var part in list.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+            {
+                if (!double.TryParse(part, NumberStyles.Float, CultureInfo.InvariantCulture, out double r) || !(r >= min && r <= max)
+                    || (whole && r != Math.Floor(r)))
+                    throw new UsageException(FormattableString.Invariant($"{option}: '{part}' is not {kind} of {min} to {max} Hz"));
+                rates.Add(r);
+            }
+            if (rates.Count == 0) throw new UsageException($"{option} names no frame rate: give one or more, comma-separated, e.g. 72,90");
+            return rates;
         }
 
         /// <summary>A folder the user named: it must exist (null passes, for an option left out).</summary>

@@ -135,6 +135,13 @@ namespace HeadGait.Tests.Cli
             yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--pose", "NaN");
             yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--pose", "-72");
             yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--pose", "1e300");
+            yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--pose", ",");
+            // animator-check
+            yield return Case(2, "animator-check", "FILE", "--fps", "garbage");
+            yield return Case(2, "animator-check", "FILE", "--fps", "0");
+            yield return Case(2, "animator-check", "FILE", "--fps", "NaN");
+            yield return Case(2, "animator-check", "FILE", "--fps", "1e300");
+            yield return Case(2, "animator-check", "FILE", "--fps", ",");
             yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--units", "garbage");
             yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--up", "");
             yield return Case(2, "from-bvh", "DATA", "--out", "OUT", "--seed", "-1");
@@ -154,6 +161,30 @@ namespace HeadGait.Tests.Cli
             yield return Case(2, "from-bvh", "DATA", "--out", "");
             yield return Case(2, "study", "generate", "");
             yield return Case(2, "replay", "");
+        }
+
+        /// <summary>Regression: an empty frame-rate list ran nothing (animator-check exited 0 having checked no frame rate;
+        /// from-bvh --pose wrote acceleration recordings as if --pose were left out).</summary>
+        [Test]
+        public void AnEmptyFrameRateListIsAUsageErrorNamingTheOption()
+        {
+            string bvh = Path.Combine(folder, "not-a.bvh");
+            File.WriteAllText(bvh, "hello\n");
+            foreach (var args in new[]
+            {
+                new[] { "animator-check", Good, "--fps", "," },
+                new[] { "animator-check", Good, "--fps", ", ," },
+                new[] { "from-bvh", bvh, "--out", Path.Combine(folder, "out"), "--pose", "," },
+                new[] { "from-bvh", bvh, "--out", Path.Combine(folder, "out"), "--pose", ", ," },
+            })
+            {
+                var (code, _, error) = Run(args);
+                Assert.That(code, Is.EqualTo(2), string.Join(" ", args) + ": " + error);
+                Assert.That(error, Does.Contain(args[args.Length - 2] + " names no frame rate"), string.Join(" ", args));
+            }
+            var (wholeCode, _, wholeError) = Run("animator-check", Good, "--fps", "72.5");
+            Assert.That(wholeCode, Is.EqualTo(2));
+            Assert.That(wholeError, Does.Contain("--fps: '72.5' is not a whole frame rate"));
         }
 
         [TestCaseSource(nameof(Cases))]
