@@ -288,6 +288,16 @@ namespace UnityEditor.Animations
             parameters = Arrays.Append(parameters, paramater);
         }
 
+        // RuntimeAnimatorController.animationClips: the clips its layers' states play, each once, in layer and state order.
+        internal override AnimationClip[] AnimationClipsOf()
+        {
+            var clips = new List<AnimationClip>();
+            foreach (var layer in layerList)
+                foreach (var child in layer.stateMachine?.states ?? new ChildAnimatorState[0])
+                    if (child.state?.motion is AnimationClip clip && !clips.Contains(clip)) clips.Add(clip);
+            return clips.ToArray();
+        }
+
         // AnimatorController.cs: CreateAnimatorControllerAtPath(string path): a controller named Path.GetFileName(path),
         // created as the asset at path, with one layer "Base Layer".
         public static AnimatorController CreateAnimatorControllerAtPath(string path)
@@ -347,6 +357,31 @@ namespace UnityEditor
             foreach (var o in list) pathOf.Remove(o);
             assets.Remove(path);
             return true;
+        }
+
+        // IsValidFolder(string path): a folder of the project: "Assets", "Packages/<name>", or one CreateFolder made (here
+        // with any asset under it counting too).
+        static readonly HashSet<string> folders = new HashSet<string>();
+
+        public static bool IsValidFolder(string path)
+        {
+            if (string.IsNullOrEmpty(path)) return false;
+            path = path.TrimEnd('/');
+            if (path == "Assets" || (path.StartsWith("Packages/", StringComparison.Ordinal) && path.IndexOf('/', 9) < 0) || folders.Contains(path)) return true;
+            foreach (var asset in assets.Keys)
+                if (asset.StartsWith(path + "/", StringComparison.Ordinal)) return true;
+            return false;
+        }
+
+        // CreateFolder(string parentFolder, string newFolderName): the new folder's GUID, or "" when the parent is no folder;
+        // a name taken already gets " 1", " 2", ... (Unity makes it unique).
+        public static string CreateFolder(string parentFolder, string newFolderName)
+        {
+            if (!IsValidFolder(parentFolder) || string.IsNullOrEmpty(newFolderName)) return "";
+            string path = parentFolder.TrimEnd('/') + "/" + newFolderName;
+            for (int i = 1; IsValidFolder(path); i++) path = parentFolder.TrimEnd('/') + "/" + newFolderName + " " + i;
+            folders.Add(path);
+            return Guid.NewGuid().ToString("N");
         }
 
         // SaveAssets(): writes changed assets to disk; nothing to write here.

@@ -28,6 +28,9 @@ namespace UnityEngine
 
     public class Animator : Behaviour
     {
+        // Animator.bindings.cs: runtimeAnimatorController { get; set; } (the controller or override controller it plays).
+        public RuntimeAnimatorController runtimeAnimatorController { get; set; }
+
         // Animator.bindings.cs: SetInteger/SetFloat/SetBool by name and by id (int hash).
         public void SetInteger(string name, int value) { }
         public void SetInteger(int id, int value) { }

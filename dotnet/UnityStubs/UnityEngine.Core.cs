@@ -151,6 +151,10 @@ namespace UnityEngine
     {
         internal static void Send(object target, string message)
         {
+            // Outside Play Mode the editor sends a script its messages only with [ExecuteAlways] or [ExecuteInEditMode]
+            // (ScriptReference ExecuteAlways).
+            if (!Application.isPlaying && !target.GetType().IsDefined(typeof(ExecuteAlways), true)
+                && !target.GetType().IsDefined(typeof(ExecuteInEditMode), true)) return;
             for (var type = target.GetType(); type != null && type != typeof(MonoBehaviour); type = type.BaseType)
             {
                 var m = type.GetMethod(message, System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public
@@ -211,6 +215,10 @@ namespace UnityEngine
     public class Application
     {
         public static string dataPath => "Assets";
+
+        // Application.bindings.cs: isPlaying { get; }: true in a player and in the editor's Play Mode. The stand-ins run
+        // as in Play Mode unless a test of editor code enters the editor's edit mode (StandInEditMode).
+        public static bool isPlaying => !StandInEditMode.Active;
 
         // Application.bindings.cs: persistentDataPath { get; } (per platform; ScriptReference Application.persistentDataPath).
         // The stand-in: a folder of its own under the temporary folder, made on first use.
@@ -300,6 +308,29 @@ namespace UnityEngine
 
     // Runtime/Export/Attributes.cs and Runtime/Export/Scripting/SerializeField.cs (PropertyAttribute subclasses in Runtime/Export/PropertyAttribute.cs)
     [AttributeUsage(AttributeTargets.Field)] public sealed class SerializeField : Attribute { }
+
+    // Runtime/Export/Scripting/ExecuteAlways.cs and ExecuteInEditMode (Runtime/Export/Scripting/Attributes.cs).
+    [AttributeUsage(AttributeTargets.Class, Inherited = false)] public sealed class ExecuteAlways : Attribute { }
+    [AttributeUsage(AttributeTargets.Class, Inherited = false)] public sealed class ExecuteInEditMode : Attribute { }
+
+    /// <summary>
+    /// Not Unity API: the stand-ins' switch into the editor's edit mode (Application.isPlaying false, no Awake, OnEnable,
+    /// OnDisable or OnDestroy for scripts without [ExecuteAlways]), for tests of editor code such as the prefab builder.
+    /// Package code never uses it.
+    /// </summary>
+    public sealed class StandInEditMode : IDisposable
+    {
+        internal static bool Active;
+        readonly bool before;
+
+        public StandInEditMode()
+        {
+            before = Active;
+            Active = true;
+        }
+
+        public void Dispose() => Active = before;
+    }
     [AttributeUsage(AttributeTargets.Field)] public sealed class TooltipAttribute : Attribute { public TooltipAttribute(string tooltip) { } }
     [AttributeUsage(AttributeTargets.Field)] public sealed class HeaderAttribute : Attribute { public HeaderAttribute(string header) { } }
     [AttributeUsage(AttributeTargets.Field)] public sealed class RangeAttribute : Attribute { public RangeAttribute(float min, float max) { } }

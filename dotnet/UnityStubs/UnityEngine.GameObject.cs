@@ -1,7 +1,7 @@
 // Stand-ins for the GameObject / Transform members the package's components use. Signatures checked against
 // UnityCsReference: Runtime/Export/Scripting/GameObject.bindings.cs (GameObject(string), GameObject(string, params
 // Type[]), SetActive(bool), activeSelf, activeInHierarchy, transform, AddComponent<T>() where T : Component,
-// GetComponent<T>(), GetComponentInChildren<T>(bool)), Runtime/Transform/ScriptBindings/Transform.bindings.cs (parent,
+// GetComponent<T>(), GetComponents<T>(), GetComponentInChildren<T>(bool)), Runtime/Transform/ScriptBindings/Transform.bindings.cs (parent,
 // SetParent(Transform, bool), childCount, GetChild(int), Find(string), localPosition, localRotation, localScale, position,
 // rotation, lossyScale, forward, SetPositionAndRotation(Vector3, Quaternion)), Runtime/Export/Scripting/Component.bindings.cs
 // (transform, gameObject), Runtime/Transform/ScriptBindings/RectTransform.bindings.cs (anchorMin, anchorMax,
@@ -113,6 +113,15 @@ namespace UnityEngine
             return default;
         }
 
+        // GetComponents<T>(): every component that is a T, in the order the GameObject lists them.
+        public T[] GetComponents<T>()
+        {
+            var found = new List<T>();
+            foreach (var c in components)
+                if (c is T t && !c.destroyed) found.Add(t);
+            return found.ToArray();
+        }
+
         // GetComponentInChildren<T>(bool includeInactive = false): this GameObject, then its children depth first; inactive
         // GameObjects are skipped unless includeInactive.
         public T GetComponentInChildren<T>() => GetComponentInChildren<T>(false);
@@ -128,6 +137,55 @@ namespace UnityEngine
                 if (found != null) return found;
             }
             return default;
+        }
+
+        // What a prefab asset holds of this hierarchy (PrefabUtility.SaveAsPrefabAsset in the UnityEditor stand-in): a copy of
+        // every GameObject, Transform and component, with no messages sent (an asset is in no scene). A script's serialized
+        // fields are copied (public, or [SerializeField], not static or readonly); a built-in component's whole state; a
+        // reference to an object inside the hierarchy is remapped to its copy, one to an asset kept.
+        internal GameObject CopyForAsset()
+        {
+            var map = new Dictionary<Object, Object>();
+            var pairs = new List<(Component From, Component To)>();
+            var copy = CopyTree(this, null, map, pairs);
+            foreach (var (from, to) in pairs) CopyFields(from, to, map);
+            return copy;
+        }
+
+        static GameObject CopyTree(GameObject source, Transform parent, Dictionary<Object, Object> map, List<(Component, Component)> pairs)
+        {
+            var copy = new GameObject(source.name) { activeSelf = source.activeSelf };
+            map[source] = copy;
+            map[source.transform] = copy.transform;
+            copy.transform.localPosition = source.transform.localPosition;
+            copy.transform.localRotation = source.transform.localRotation;
+            copy.transform.localScale = source.transform.localScale;
+            if (parent != null) copy.transform.SetParent(parent, false);
+            foreach (var c in source.components)
+            {
+                if (c is Transform || c.destroyed) continue;
+                var to = (Component)Activator.CreateInstance(c.GetType(), true);
+                copy.Attach(to);
+                if (to is Behaviour b) b.enabled = ((Behaviour)c).enabled;
+                map[c] = to;
+                pairs.Add((c, to));
+            }
+            foreach (var child in source.transform.children) CopyTree(child.gameObject, copy.transform, map, pairs);
+            return copy;
+        }
+
+        static void CopyFields(Component from, Component to, Dictionary<Object, Object> map)
+        {
+            bool script = from is MonoBehaviour;
+            for (var type = from.GetType(); type != typeof(Behaviour) && type != typeof(Component) && type != typeof(MonoBehaviour); type = type.BaseType)
+                foreach (var f in type.GetFields(System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public
+                    | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.DeclaredOnly))
+                {
+                    if (script && (f.IsInitOnly || !(f.IsPublic || f.IsDefined(typeof(SerializeField), false)))) continue;
+                    object value = f.GetValue(from);
+                    if (value is Object o && map.TryGetValue(o, out var mapped)) value = mapped;
+                    f.SetValue(to, value);
+                }
         }
 
         // Destroying a GameObject destroys its children and components (OnDisable, then OnDestroy, each once).
@@ -283,7 +341,23 @@ namespace UnityEngine
 
     public sealed class Resources
     {
-        public static T GetBuiltinResource<T>(string path) where T : Object => default;
+        // GetBuiltinResource<T>(string path): an object of the "unity default resources" library by file name (the primitive
+        // meshes "Cube.fbx", "Sphere.fbx", "Capsule.fbx", "Cylinder.fbx", "Plane.fbx", "Quad.fbx"; the Arial font); null
+        // for another name (Unity logs that it is not found). One object per name, as the library holds one.
+        static readonly Dictionary<string, Object> builtins = new Dictionary<string, Object>();
+
+        public static T GetBuiltinResource<T>(string path) where T : Object
+        {
+            if (!builtins.TryGetValue(path ?? "", out var found))
+            {
+                bool mesh = Array.IndexOf(new[] { "Cube.fbx", "Sphere.fbx", "Capsule.fbx", "Cylinder.fbx", "Plane.fbx", "Quad.fbx" }, path) >= 0;
+                found = mesh ? new Mesh() : path == "Arial.ttf" || path == "LegacyRuntime.ttf" ? new Font() : null;
+                if (found == null) return null;
+                found.name = System.IO.Path.GetFileNameWithoutExtension(path);
+                builtins[path] = found;
+            }
+            return found as T;
+        }
     }
 
     public enum RenderMode { ScreenSpaceOverlay = 0, ScreenSpaceCamera = 1, WorldSpace = 2 }

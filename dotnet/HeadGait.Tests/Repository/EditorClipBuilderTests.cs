@@ -34,9 +34,12 @@ namespace HeadGait.Tests
 
         /// <summary>The shipped clip's m_EditorCurves and settings against the built clip; the differences, one line each.</summary>
         static List<string> Differences(LocomotionState state, AnimationClip built)
+            => Differences(GaitAssetFiles.ClipPath(state), built, typeof(Transform), "4");
+
+        /// <summary>As above for any shipped clip file, whose curves bind to <paramref name="type"/> (class <paramref name="classId"/>).</summary>
+        internal static List<string> Differences(string file, AnimationClip built, Type type, string classId)
         {
             var problems = new List<string>();
-            string file = GaitAssetFiles.ClipPath(state);
             var clip = UnityYamlFile.Parse(File.ReadAllText(Path.Combine(Package, file)), file).Single(d => d.ClassId == 74);
             static string S(YamlNode n, string key) => ((YamlScalarNode)((YamlMappingNode)n).Children[new YamlScalarNode(key)]).Value;
             static double D(YamlNode n, string key) => double.Parse(S(n, key), CultureInfo.InvariantCulture);
@@ -49,7 +52,7 @@ namespace HeadGait.Tests
             for (int i = 0; i < Math.Min(bindings.Length, shipped.Count); i++)
             {
                 string where = $"{file} curve {i} ({S(shipped[i], "path")} {S(shipped[i], "attribute")})";
-                if (bindings[i].path != S(shipped[i], "path") || bindings[i].propertyName != S(shipped[i], "attribute") || bindings[i].type != typeof(Transform) || S(shipped[i], "classID") != "4")
+                if (bindings[i].path != S(shipped[i], "path") || bindings[i].propertyName != S(shipped[i], "attribute") || bindings[i].type != type || S(shipped[i], "classID") != classId)
                 {
                     problems.Add($"{where}: built as {bindings[i].path} {bindings[i].propertyName} on {bindings[i].type?.Name}");
                     continue;

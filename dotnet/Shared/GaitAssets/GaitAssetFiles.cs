@@ -35,10 +35,10 @@ namespace HeadGait.Tooling
         /// <summary>A prefab's root as a prefab instance's source (class 1001 * 100000).</summary>
         public const long PrefabRootId = 100100000;
 
-        public const string LegsRoot = "HeadGait Legs";
-        public const string MannequinRoot = "HeadGait Mannequin";
+        public const string LegsRoot = Mannequin.LegsPrefabRoot;
+        public const string MannequinRoot = Mannequin.PrefabRoot;
         /// <summary>The mannequin's path under the drop-in prefab's root.</summary>
-        public const string AvatarName = "Avatar";
+        public const string AvatarName = Mannequin.LegsAvatar;
 
         public static string ClipPath(LocomotionState clip) => AnimationFolder + "/" + GaitClips.Name(clip) + ".anim";
 
@@ -115,38 +115,21 @@ namespace HeadGait.Tooling
             return UnityMeta.GuidOf(meta) ?? throw new InvalidOperationException($"{meta}: missing or without a guid");
         }
 
-        /// <summary>The mannequin's bones and primitive meshes under <paramref name="root"/> (Unity axes: x right, y up, z forward).</summary>
+        /// <summary>The mannequin's bones and primitive meshes (<see cref="Mannequin.Parts"/>) under <paramref name="root"/>.</summary>
         public static void AddMannequin(UnityHierarchyYaml h, string root)
         {
-            string P(string path) => root.Length == 0 ? path : root + "/" + path;
-            double[] V(double x, double y, double z) => new[] { x, y, z };
-            h.Add(P(Mannequin.Hips), "Hips", V(0, Mannequin.StandingHipHeight, 0));
-            h.AddMesh(P(Mannequin.Hips), "Pelvis Mesh", UnityHierarchyYaml.Cube, V(0, 0, 0), V(0.3, 0.14, 0.18), PrimitiveMaterials.Mannequin);
-            h.Add(P(Mannequin.Spine), "Spine", V(0, 0.08, 0));
-            h.AddMesh(P(Mannequin.Spine), "Mesh", UnityHierarchyYaml.Cube, V(0, 0.24, 0), V(0.34, 0.48, 0.2), PrimitiveMaterials.Mannequin);
-            h.Add(P(Mannequin.Head), "Head", V(0, 0.56, 0));
-            h.AddMesh(P(Mannequin.Head), "Mesh", UnityHierarchyYaml.Sphere, V(0, 0.1, 0), V(0.22, 0.22, 0.22), PrimitiveMaterials.Mannequin);
-            foreach (Foot foot in new[] { Foot.Left, Foot.Right })
+            string P(string path) => root.Length == 0 ? path : path.Length == 0 ? root : root + "/" + path;
+            foreach (var part in Mannequin.Parts())
             {
-                double side = foot == Foot.Left ? -1 : 1;
-                string s = Mannequin.Side(foot);
-                h.Add(P(Mannequin.UpperLeg(foot)), s + "UpperLeg", V(side * Mannequin.HipWidth / 2, 0, 0));
-                h.AddMesh(P(Mannequin.UpperLeg(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -Mannequin.Thigh / 2, 0), V(0.12, Mannequin.Thigh / 2, 0.12), PrimitiveMaterials.Mannequin);
-                h.Add(P(Mannequin.LowerLeg(foot)), s + "LowerLeg", V(0, -Mannequin.Thigh, 0));
-                h.AddMesh(P(Mannequin.LowerLeg(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -Mannequin.Shank / 2, 0), V(0.1, Mannequin.Shank / 2, 0.1), PrimitiveMaterials.Mannequin);
-                double ball = Mannequin.BallFromHeel - Mannequin.HeelBehindAnkle;
-                h.Add(P(Mannequin.FootPath(foot)), s + "Foot", V(0, -Mannequin.Shank, 0));
-                h.AddMesh(P(Mannequin.FootPath(foot)), "Mesh", UnityHierarchyYaml.Cube,
-                    V(0, -Mannequin.AnkleHeight / 2, (ball - Mannequin.HeelBehindAnkle) / 2), V(0.09, Mannequin.AnkleHeight, Mannequin.BallFromHeel), PrimitiveMaterials.Mannequin);
-                double toes = Mannequin.FootLength - Mannequin.BallFromHeel;
-                h.Add(P(Mannequin.Toes(foot)), s + "Toes", V(0, -Mannequin.AnkleHeight, ball));
-                h.AddMesh(P(Mannequin.Toes(foot)), "Mesh", UnityHierarchyYaml.Cube, V(0, 0.015, toes / 2), V(0.09, 0.03, toes), PrimitiveMaterials.Mannequin);
-                h.Add(P(Mannequin.UpperArm(foot)), s + "UpperArm", V(side * 0.21, 0.46, 0));
-                h.AddMesh(P(Mannequin.UpperArm(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -0.15, 0), V(0.08, 0.15, 0.08), PrimitiveMaterials.Mannequin);
-                h.Add(P(Mannequin.LowerArm(foot)), s + "LowerArm", V(0, -0.3, 0), V(-15, 0, 0));
-                h.AddMesh(P(Mannequin.LowerArm(foot)), "Mesh", UnityHierarchyYaml.Capsule, V(0, -0.13, 0), V(0.07, 0.13, 0.07), PrimitiveMaterials.Mannequin);
+                if (part.Primitive is MannequinPrimitive primitive)
+                    h.AddMesh(P(part.ParentPath), part.Name, Mesh(primitive), part.Position, part.Scale, PrimitiveMaterials.Mannequin);
+                else
+                    h.Add(P(part.Path), part.Name, part.Position, part.Euler);
             }
         }
+
+        /// <summary>Unity's built-in mesh of a primitive.</summary>
+        static int Mesh(MannequinPrimitive p) => p == MannequinPrimitive.Cube ? UnityHierarchyYaml.Cube : p == MannequinPrimitive.Sphere ? UnityHierarchyYaml.Sphere : UnityHierarchyYaml.Capsule;
 
         /// <summary>An Animator (95) playing the package's controller on the rig below it (Generic: no Avatar).</summary>
         public static long AddAnimator(UnityHierarchyYaml h, string path)

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace HeadGait
 {
@@ -63,6 +64,11 @@ namespace HeadGait
         /// <summary>Hip joint height when standing.</summary>
         public const double StandingHipHeight = Thigh + Shank + AnkleHeight;
 
+        /// <summary>The mannequin prefab's root, and the drop-in prefab's root and the mannequin's child of it.</summary>
+        public const string PrefabRoot = "HeadGait Mannequin";
+        public const string LegsPrefabRoot = "HeadGait Legs";
+        public const string LegsAvatar = "Avatar";
+
         public const string Hips = "Hips";
         public const string Spine = Hips + "/Spine";
         public const string Head = Spine + "/Head";
@@ -74,6 +80,46 @@ namespace HeadGait
         public static string UpperArm(Foot side) => Spine + "/" + Side(side) + "UpperArm";
         public static string LowerArm(Foot side) => UpperArm(side) + "/" + Side(side) + "LowerArm";
         public static string Side(Foot foot) => foot == Foot.Left ? "Left" : "Right";
+
+        /// <summary>
+        /// The mannequin's GameObjects in the order a prefab lists them: its bones (named as <see cref="Hips"/> etc. say) and,
+        /// under each, a child showing a Unity primitive mesh (Unity axes: x right, y up, z forward; metres, degrees). One
+        /// place for what `headgait clips` writes into the prefabs and Tools > HeadGait > Create Prefabs builds.
+        /// </summary>
+        public static List<MannequinPart> Parts()
+        {
+            var parts = new List<MannequinPart>();
+            double[] V(double x, double y, double z) => new[] { x, y, z };
+            void Bone(string path, double[] position, double[] euler = null)
+                => parts.Add(new MannequinPart(path, path.Substring(path.LastIndexOf('/') + 1), position, euler ?? V(0, 0, 0), V(1, 1, 1), null));
+            void Mesh(string bone, string name, MannequinPrimitive primitive, double[] position, double[] scale)
+                => parts.Add(new MannequinPart(bone + "/" + name, name, position, V(0, 0, 0), scale, primitive));
+            Bone(Hips, V(0, StandingHipHeight, 0));
+            Mesh(Hips, "Pelvis Mesh", MannequinPrimitive.Cube, V(0, 0, 0), V(0.3, 0.14, 0.18));
+            Bone(Spine, V(0, 0.08, 0));
+            Mesh(Spine, "Mesh", MannequinPrimitive.Cube, V(0, 0.24, 0), V(0.34, 0.48, 0.2));
+            Bone(Head, V(0, 0.56, 0));
+            Mesh(Head, "Mesh", MannequinPrimitive.Sphere, V(0, 0.1, 0), V(0.22, 0.22, 0.22));
+            foreach (Foot foot in new[] { Foot.Left, Foot.Right })
+            {
+                double side = foot == Foot.Left ? -1 : 1;
+                Bone(UpperLeg(foot), V(side * HipWidth / 2, 0, 0));
+                Mesh(UpperLeg(foot), "Mesh", MannequinPrimitive.Capsule, V(0, -Thigh / 2, 0), V(0.12, Thigh / 2, 0.12));
+                Bone(LowerLeg(foot), V(0, -Thigh, 0));
+                Mesh(LowerLeg(foot), "Mesh", MannequinPrimitive.Capsule, V(0, -Shank / 2, 0), V(0.1, Shank / 2, 0.1));
+                double ball = BallFromHeel - HeelBehindAnkle;
+                Bone(FootPath(foot), V(0, -Shank, 0));
+                Mesh(FootPath(foot), "Mesh", MannequinPrimitive.Cube, V(0, -AnkleHeight / 2, (ball - HeelBehindAnkle) / 2), V(0.09, AnkleHeight, BallFromHeel));
+                double toes = FootLength - BallFromHeel;
+                Bone(Toes(foot), V(0, -AnkleHeight, ball));
+                Mesh(Toes(foot), "Mesh", MannequinPrimitive.Cube, V(0, 0.015, toes / 2), V(0.09, 0.03, toes));
+                Bone(UpperArm(foot), V(side * 0.21, 0.46, 0));
+                Mesh(UpperArm(foot), "Mesh", MannequinPrimitive.Capsule, V(0, -0.15, 0), V(0.08, 0.15, 0.08));
+                Bone(LowerArm(foot), V(0, -0.3, 0), V(-15, 0, 0));
+                Mesh(LowerArm(foot), "Mesh", MannequinPrimitive.Capsule, V(0, -0.13, 0), V(0.07, 0.13, 0.07));
+            }
+            return parts;
+        }
 
         /// <summary>Forward kinematics of one leg from its angles, with the pelvis tilted anteriorly by <paramref name="pelvicTilt"/> degrees.</summary>
         public static LegPoints Leg(LegAngles a, double pelvicTilt)
@@ -95,5 +141,40 @@ namespace HeadGait
             => new SagittalPoint(x * Math.Cos(angle) - y * Math.Sin(angle), x * Math.Sin(angle) + y * Math.Cos(angle));
 
         static double Radians(double degrees) => degrees * Math.PI / 180.0;
+    }
+
+    /// <summary>The Unity primitive meshes the mannequin is made of (Unity's built-in Cube, Sphere and Capsule).</summary>
+    public enum MannequinPrimitive
+    {
+        Cube,
+        Sphere,
+        Capsule,
+    }
+
+    /// <summary>One GameObject of <see cref="Mannequin.Parts"/>: a bone, or (with a <see cref="Primitive"/>) a mesh under one.</summary>
+    public sealed class MannequinPart
+    {
+        /// <summary>Path below the mannequin's root, '/'-joined names.</summary>
+        public string Path { get; }
+        public string Name { get; }
+        /// <summary>Local position (m), Euler angles (degrees, Unity's order) and scale.</summary>
+        public double[] Position { get; }
+        public double[] Euler { get; }
+        public double[] Scale { get; }
+        /// <summary>The mesh it shows; null for a bone.</summary>
+        public MannequinPrimitive? Primitive { get; }
+
+        /// <summary>The parent's path ("" for a child of the root).</summary>
+        public string ParentPath => Path.Contains("/") ? Path.Substring(0, Path.LastIndexOf('/')) : "";
+
+        public MannequinPart(string path, string name, double[] position, double[] euler, double[] scale, MannequinPrimitive? primitive)
+        {
+            Path = path;
+            Name = name;
+            Position = position;
+            Euler = euler;
+            Scale = scale;
+            Primitive = primitive;
+        }
     }
 }

@@ -1,7 +1,7 @@
 using System;
 using System.Collections.Generic;
 
-namespace HeadGait.Tooling
+namespace HeadGait
 {
     /// <summary>
     /// Unity Humanoid muscle values (-1..1) for the mannequin's sagittal angles, so the clips retarget to any humanoid
