@@ -43,11 +43,12 @@ namespace HeadGait
         /// its timestamp (causal, zero-order hold).
         /// </summary>
         public static ReplayResult Run(Recording recording, IGaitClassifier classifier,
-            PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null, bool keepTrace = false)
+            PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null, bool keepTrace = false,
+            RhythmHoldSettings holdSettings = null)
         {
             if (recording == null) throw new ArgumentNullException(nameof(recording));
             classifier.Reset();
-            var pipeline = new GaitPipeline(classifier, preprocessorSettings, animatorSettings) { SourceLag = recording.SourceLag };
+            var pipeline = new GaitPipeline(classifier, preprocessorSettings, animatorSettings, holdSettings) { SourceLag = recording.SourceLag };
             var predictions = new List<GaitPrediction>();
             var frames = new List<AnimatorFrame>();
             pipeline.FrameProduced += (p, f) =>

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Diagnostics;
 
 namespace HeadGait
@@ -16,18 +17,22 @@ namespace HeadGait
         readonly Stopwatch stopwatch = new Stopwatch();
         readonly StanceLatch advancedStance = new StanceLatch(); // the feet's stance shares of predictions moved ahead by SourceLag
         readonly LearnedWindowBatch batch; // null unless the classifier is a learned one
+        readonly RhythmHold hold;
+        readonly List<RhythmReading> batchRhythm = new List<RhythmReading>(); // the hold's reading of each batched window, in order
         bool batching;                      // inside PushBatch: windows and restarts are queued, not run
         bool settled = true;                // standing since a restart, no window since: a refused stream need not restart again
 
-        public GaitPipeline(IGaitClassifier classifier, PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null)
+        public GaitPipeline(IGaitClassifier classifier, PreprocessorSettings preprocessorSettings = null, AnimatorSettings animatorSettings = null, RhythmHoldSettings holdSettings = null)
         {
             this.classifier = classifier ?? throw new ArgumentNullException(nameof(classifier));
+            hold = new RhythmHold(classifier.PhaseMap, holdSettings);
             var settings = preprocessorSettings ?? new PreprocessorSettings();
-            if (settings.History < classifier.WindowLength)
+            int history = Math.Max(classifier.WindowLength, hold.History);
+            if (settings.History < history)
             {
-                // The classifier reads more history than the settings keep: carry it in every window.
+                // The classifier or the hold reads more history than the settings keep: carry it in every window.
                 settings = settings.Clone();
-                settings.History = classifier.WindowLength;
+                settings.History = history;
             }
             preprocessor = new StreamPreprocessor(settings);
             animator = new GaitAnimatorStateMachine(classifier.PhaseMap, animatorSettings);
@@ -66,6 +71,7 @@ namespace HeadGait
                 || (!settled && (outcome == SampleOutcome.SkippedCoarseClock || preprocessor.BelowLowestRate)))
             {
                 settled = true;
+                hold.ForgetRhythm();
                 if (batching) batch.AddRestart(sample.Time);
                 else Restart(sample.Time);
             }
@@ -89,6 +95,8 @@ namespace HeadGait
                 return;
             }
             batch.Clear();
+            batchRhythm.Clear();
+            int rhythmIndex = 0;
             batching = true;
             try
             {
@@ -111,9 +119,10 @@ namespace HeadGait
                 stopwatch.Start();
                 var prediction = batch.Classify(i);
                 stopwatch.Stop();
-                Publish(prediction);
+                Publish(prediction, batchRhythm[rhythmIndex++]);
             }
             batch.Clear();
+            batchRhythm.Clear();
         }
 
         /// <summary>
@@ -124,6 +133,7 @@ namespace HeadGait
         {
             if (settled) return;
             settled = true;
+            hold.ForgetRhythm();
             Restart(time);
         }
 
@@ -135,6 +145,7 @@ namespace HeadGait
         {
             settled = true;
             classifier.Reset();
+            hold.Reset();
             animator.Reset();
             LatestPrediction = GaitPrediction.Standing(time);
             Latest = AnimatorFrame.Standing(time);
@@ -142,23 +153,25 @@ namespace HeadGait
 
         void OnWindow(SignalWindow window)
         {
+            var rhythm = hold.Observe(window);
             if (batching)
             {
                 batch.AddWindow(window);
+                batchRhythm.Add(rhythm);
                 return;
             }
             stopwatch.Start();
             var prediction = classifier.Classify(window);
             stopwatch.Stop();
-            Publish(prediction);
+            Publish(prediction, rhythm);
         }
 
-        void Publish(GaitPrediction prediction)
+        void Publish(GaitPrediction prediction, RhythmReading rhythm)
         {
             settled = false;
             if (SourceLag != 0) prediction = Advanced(prediction, SourceLag + classifier.PoseFitDelay);
             LatestPrediction = prediction;
-            Latest = animator.Update(prediction);
+            Latest = animator.Update(hold.Apply(prediction, rhythm));
             Windows++;
             FrameProduced?.Invoke(prediction, Latest);
         }
@@ -179,6 +192,8 @@ namespace HeadGait
             advancedStance.Reset();
             preprocessor.Reset();
             classifier.Reset();
+            hold.Reset();
+            hold.ForgetRhythm();
             animator.Reset();
             LatestPrediction = default;
             Latest = AnimatorFrame.Standing(0);
