@@ -15,8 +15,10 @@ namespace HeadGait.Cli
     /// </summary>
     static class CalibrationGlasses
     {
-        public static int Run(string[] data, string modelFolder, List<string> names, double seconds)
+        public static int Run(string[] data, string modelFolder, List<string> names, double seconds, string adapt)
         {
+            var settings = CalibrationBenchmark.Settings(adapt).Self;
+            if (adapt != null) Console.WriteLine($"Refitted (--adapt {adapt}): {CalibrationBenchmark.Describe(settings)}");
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false);
             string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
             var shipped = Classifiers.Load(folder);
@@ -41,7 +43,7 @@ namespace HeadGait.Cli
                 WearerProfile profile;
                 try
                 {
-                    profile = new CalibrationSession(first).Fit(shipped, Safe(person.Key), selfSupervised: true);
+                    profile = new CalibrationSession(first).Fit(shipped, Safe(person.Key), selfSupervised: true, settings);
                 }
                 catch (InvalidOperationException e)
                 {

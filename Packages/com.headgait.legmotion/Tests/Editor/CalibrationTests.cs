@@ -62,6 +62,40 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void WalksRecordedApartJoinIntoOneSessionOnOneClock()
+        {
+            // The calibration benchmark's minute is made of clips recorded apart: joined, they must read as one walk (one
+            // clock, the ankles going on from where they stopped) that the ankle labeller labels like each clip alone.
+            var wearer = Wearer();
+            var parts = new List<CalibrationSession>();
+            var truths = new List<CalibrationSession>();
+            foreach (ulong seed in new[] { 84UL, 85UL, 86UL })
+            {
+                var walk = WalkingStreamGenerator.Generate("part" + seed, wearer, new StreamScript().Stand(1).Walk(8, Foot.Left).Stand(1), seed);
+                var (left, right) = SyntheticAnkles.From(walk, 72, seed);
+                parts.Add(new CalibrationSession(Unlabelled(walk), left, right));
+                truths.Add(new CalibrationSession(walk));
+            }
+            var joined = CalibrationSession.Join(parts);
+            var head = joined.Head.Samples;
+            Assert.That(head.Count, Is.EqualTo(parts.Sum(p => p.Head.Samples.Count)));
+            var steps = head.Zip(head.Skip(1), (a, b) => b.Imu.Time - a.Imu.Time).ToList();
+            Assert.That(steps.Min(), Is.GreaterThan(0), "one clock, forward only");
+            Assert.That(steps.Count(d => Math.Abs(d - CalibrationSession.JoinGapSeconds) < 1e-9), Is.EqualTo(parts.Count - 1), "the parts a join gap apart");
+            foreach (var ankle in new[] { joined.LeftAnkle, joined.RightAnkle })
+            {
+                double fastest = ankle.Zip(ankle.Skip(1), (a, b) => Math.Sqrt(Math.Pow(b.Px - a.Px, 2) + Math.Pow(b.Pz - a.Pz, 2)) / (b.Time - a.Time)).Max();
+                Assert.That(fastest, Is.LessThan(10), "the ankles go on from where the last part left them (m/s)");
+            }
+            var truth = CalibrationSession.Join(truths).Head;
+            var labelled = joined.Labelled();
+            Assert.That(Agreement(labelled, truth), Is.GreaterThan(0.8));
+            Assert.That(PhaseEvents.TruthSteps(labelled).Count, Is.EqualTo(PhaseEvents.TruthSteps(truth).Count).Within(6));
+            var mixed = Assert.Throws<ArgumentException>(() => CalibrationSession.Join(new[] { parts[0], truths[1] }));
+            Assert.That(mixed.Message, Does.Contain("ankle streams"));
+        }
+
+        [Test]
         public void BrokenAnkleStreamsAreRefusedNamingTheStream()
         {
             var walk = Walk(Wearer());

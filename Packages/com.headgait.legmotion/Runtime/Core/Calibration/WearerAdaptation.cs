@@ -44,6 +44,12 @@ namespace HeadGait.Calibration
         public double ThresholdPriorSteps = 20;
         /// <summary>Scale the learned models' input towards the training walkers' bounce.</summary>
         public bool LearnedGain = true;
+        /// <summary>
+        /// Self-supervised: read COR's contacts with its walking gate open (<see cref="WearerAdaptation.SelfLabel"/>). The wearer
+        /// was asked to walk, so the gate has nothing to decide, and a gate that refuses a calm walker's steps leaves nothing to
+        /// fit on (nor anything to tell how far that wearer's gate must open); the steady rhythm alone picks the sure stretches.
+        /// </summary>
+        public bool LabelWithGateOpen = true;
     }
 
     public static class WearerAdaptation
@@ -252,10 +258,10 @@ namespace HeadGait.Calibration
         /// stretch's median, 0.3 to 1 s) becomes a labelled walking recording, its feet alternating from the side COR
         /// named most often and each foot's phases spread over its stride by the trained phase map. Empty when none is sure.
         /// </summary>
-        public static List<Recording> SelfLabel(GaitModels models, Recording walk)
+        public static List<Recording> SelfLabel(GaitModels models, Recording walk, bool gateOpen = true)
         {
             if (models?.Correlation == null) throw new InvalidOperationException("Self-supervised calibration needs the trained COR template.");
-            var cor = new CorrelationClassifier(models.Correlation);
+            var cor = new CorrelationClassifier(gateOpen ? models.Correlation.With(gate: WalkingGate.Open) : models.Correlation);
             var contacts = new List<(double time, double evidence)>();
             cor.ContactDetected += (t, e, r, k) => contacts.Add((t, e));
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
