@@ -182,7 +182,7 @@ namespace HeadGait.Cli
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
         /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain,
-        /// open-labels (self-supervised labels read with COR's gate open), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part);
+        /// open-labels (self-supervised labels read with COR's gate open), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), threshold-steps=N (COR's threshold refitted from N steps);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -202,6 +202,7 @@ namespace HeadGait.Cli
                 {
                     if (key.StartsWith("prior=", StringComparison.Ordinal)) a.ThresholdPriorSteps = Number(key.Substring(6));
                     else if (key.StartsWith("margin=", StringComparison.Ordinal)) a.AcceptMargin = Number(key.Substring(7));
+                    else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
                         switch (key)
                         {
@@ -213,7 +214,7 @@ namespace HeadGait.Cli
                             case "learned-gate": a.LearnedGate = on; break;
                             case "learned-gain": a.LearnedGain = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, prior=STEPS, margin=SHARE; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, prior=STEPS, margin=SHARE, threshold-steps=N; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -225,7 +226,7 @@ namespace HeadGait.Cli
 
         internal static string Describe(AdaptationSettings a) => string.Join(" ", new[]
         {
-            a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : null, a.CorLead ? "cor-lead" : null,
+            a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : $"cor-threshold from {a.CorThresholdSteps} steps", a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null,
             a.LearnedGain ? "learned-gain" : null, a.LabelWithGateOpen ? "open-labels" : null, $"margin {a.AcceptMargin:0.###}",
         }.Where(x => x != null));
