@@ -88,7 +88,7 @@ namespace HeadGait.Cli
                     notes.Add($"{fold.Name}: not fitted with the ankle trackers, scored with the shipped models ({e.Message})");
                 }
                 double feetSeconds = watch.Elapsed.TotalSeconds;
-                var sure = WearerAdaptation.SelfLabel(models, session.Head, selfSettings.LabelWithGateOpen);
+                var sure = WearerAdaptation.SelfLabel(models, session.Head, selfSettings.LabelWithGateOpen, selfSettings.FillMissedSteps);
                 int sureSteps = sure.Sum(r => PhaseEvents.TruthSteps(r).Count);
                 WearerProfile self = null;
                 try
@@ -182,7 +182,7 @@ namespace HeadGait.Cli
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
         /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain,
-        /// open-labels (self-supervised labels read with COR's gate open), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), threshold-steps=N (COR's threshold refitted from N steps);
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -202,6 +202,7 @@ namespace HeadGait.Cli
                 {
                     if (key.StartsWith("prior=", StringComparison.Ordinal)) a.ThresholdPriorSteps = Number(key.Substring(6));
                     else if (key.StartsWith("margin=", StringComparison.Ordinal)) a.AcceptMargin = Number(key.Substring(7));
+                    else if (key.StartsWith("gate-cap=", StringComparison.Ordinal)) a.MaxGateShift = Number(key.Substring(9));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
                         switch (key)
@@ -214,7 +215,8 @@ namespace HeadGait.Cli
                             case "learned-gate": a.LearnedGate = on; break;
                             case "learned-gain": a.LearnedGain = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, prior=STEPS, margin=SHARE, threshold-steps=N; no- turns one off; self: or feet: for one source)");
+                            case "fill-missed": a.FillMissedSteps = on; break;
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -226,9 +228,9 @@ namespace HeadGait.Cli
 
         internal static string Describe(AdaptationSettings a) => string.Join(" ", new[]
         {
-            a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : $"cor-threshold from {a.CorThresholdSteps} steps", a.CorLead ? "cor-lead" : null,
-            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LabelWithGateOpen ? "open-labels" : null, $"margin {a.AcceptMargin:0.###}",
+            a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
+            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}",
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>

@@ -47,7 +47,7 @@ namespace HeadGait.Cli
                 }
                 catch (InvalidOperationException e)
                 {
-                    notes.Add($"{person.Key}: not calibrated ({e.Message})");
+                    notes.Add($"{person.Key}: not calibrated ({e.Message}); {ContactRhythm(shipped, first)}");
                     continue;
                 }
                 var adapted = profile.Apply(shipped);
@@ -96,6 +96,22 @@ namespace HeadGait.Cli
             }
             foreach (var n in notes) Console.WriteLine("note: " + n);
             return 0;
+        }
+
+        /// <summary>Why a walk gave too few sure steps: how many contacts COR (gate open) found in it and how far apart.</summary>
+        static string ContactRhythm(GaitModels models, Recording walk)
+        {
+            var cor = new CorrelationClassifier(models.Correlation.With(gate: WalkingGate.Open));
+            var times = new List<double>();
+            cor.ContactDetected += (t, e, r, k) => times.Add(t);
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
+            foreach (var s in walk.Samples) pre.Push(s.Imu, w => cor.Classify(w));
+            var gaps = times.Zip(times.Skip(1), (a, b) => b - a).ToList();
+            if (gaps.Count == 0) return "COR (gate open) found no steps";
+            gaps.Sort();
+            double Q(double q) => gaps[(int)Math.Round(q * (gaps.Count - 1))];
+            return string.Format(CultureInfo.InvariantCulture, "COR (gate open) found {0} contacts, {1:F2} / {2:F2} / {3:F2} s apart (quartiles), {4} of {5} gaps 0.3-1 s",
+                times.Count, Q(0.25), Q(0.5), Q(0.75), gaps.Count(g => g >= 0.3 && g <= 1.0), gaps.Count);
         }
 
         static void Add<TKey>(Dictionary<TKey, List<RealWorldScore>> d, TKey key, RealWorldScore s)

@@ -34,6 +34,8 @@ namespace HeadGait.Calibration
         public bool DetectorGates;
         /// <summary>Open the learned models' gate as far as the wearer's walking needs (bounded): off, it let a generated walker's head movement show as walking.</summary>
         public bool LearnedGate;
+        /// <summary>Most a calibration opens a walking gate (log-odds; at most <see cref="WearerProfile.MaxGateShift"/>).</summary>
+        public double MaxGateShift = WearerProfile.MaxGateShift;
         /// <summary>
         /// Keep each refitted part only where it scores the calibration walk itself better than the trained one by at least
         /// this much misclassification (0.01 = a point); NaN keeps every part.
@@ -57,6 +59,8 @@ namespace HeadGait.Calibration
         /// fit on (nor anything to tell how far that wearer's gate must open); the steady rhythm alone picks the sure stretches.
         /// </summary>
         public bool LabelWithGateOpen = true;
+        /// <summary>Self-supervised: a step COR missed in a steady rhythm (a gap of two steps) is filled in (<see cref="WearerAdaptation.SelfLabel"/>).</summary>
+        public bool FillMissedSteps = true;
 
     }
 
@@ -95,7 +99,7 @@ namespace HeadGait.Calibration
             var baseThr = models.Threshold;
             var map = baseCor.PhaseMap;
 
-            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass)) : baseCor.Gate;
+            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseCor.Gate;
             var templates = new List<StepTemplate>();
             if (a.CorTemplate) templates.AddRange(CorrelationTemplate.Train(training, map, corGate, 1).Templates);
             foreach (var t in baseCor.Templates)
@@ -120,7 +124,7 @@ namespace HeadGait.Calibration
                 cor = cor.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
             }
 
-            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass)) : baseThr.Gate;
+            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseThr.Gate;
             var thr = baseThr.Clone();
             thr.Gate = thrGate;
             if (a.Threshold)
@@ -148,7 +152,7 @@ namespace HeadGait.Calibration
                 BaseModels = WearerProfile.Fingerprint(models),
                 Threshold = thr,
                 Correlation = cor,
-                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass),
+                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass, a.MaxGateShift),
                 LearnedGain = a.LearnedGain ? LearnedGain(baseCor.LeadReferenceBounce, walk) : 1,
             };
             // The learned models' scaling too only where it pays on the walk (the SVM's and the BLSTM's scores together).
@@ -214,7 +218,7 @@ namespace HeadGait.Calibration
         /// Log-odds to add to <paramref name="gate"/> so that <paramref name="pass"/> of the walk's walking windows pass, as
         /// training set it for the training walkers (0 when they already do; at most <see cref="WearerProfile.MaxGateShift"/>).
         /// </summary>
-        public static double GateShift(WalkingGate gate, IReadOnlyList<Recording> walk, double pass)
+        public static double GateShift(WalkingGate gate, IReadOnlyList<Recording> walk, double pass, double most = WearerProfile.MaxGateShift)
         {
             if (gate == null) return 0;
             var scores = new List<double>();
@@ -231,7 +235,7 @@ namespace HeadGait.Calibration
             if (scores.Count < 50) return 0;
             scores.Sort();
             double q = scores[(int)Math.Floor((1 - pass) * (scores.Count - 1))];
-            return Math.Max(0, Math.Min(WearerProfile.MaxGateShift, -q));
+            return Math.Max(0, Math.Min(Math.Min(most, WearerProfile.MaxGateShift), -q));
         }
 
         /// <summary>
@@ -270,7 +274,7 @@ namespace HeadGait.Calibration
         /// stretch's median, 0.3 to 1 s) becomes a labelled walking recording, its feet alternating from the side COR
         /// named most often and each foot's phases spread over its stride by the trained phase map. Empty when none is sure.
         /// </summary>
-        public static List<Recording> SelfLabel(GaitModels models, Recording walk, bool gateOpen = true)
+        public static List<Recording> SelfLabel(GaitModels models, Recording walk, bool gateOpen = true, bool fillMissed = true)
         {
             if (models?.Correlation == null) throw new InvalidOperationException("Self-supervised calibration needs the trained COR template.");
             var cor = new CorrelationClassifier(gateOpen ? models.Correlation.With(gate: WalkingGate.Open) : models.Correlation);
@@ -278,6 +282,7 @@ namespace HeadGait.Calibration
             cor.ContactDetected += (t, e, r, k) => contacts.Add((t, e));
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
             foreach (var s in walk.Samples) pre.Push(s.Imu, w => cor.Classify(w));
+            if (fillMissed) contacts = WithMissedSteps(contacts);
             var stretches = new List<Recording>();
             int start = 0;
             for (int i = 1; i <= contacts.Count; i++)
@@ -289,6 +294,34 @@ namespace HeadGait.Calibration
                 start = i;
             }
             return stretches;
+        }
+
+        /// <summary>
+        /// The contacts with one contact put midway into every gap of two of the walk's steps (its median step, within
+        /// <see cref="RhythmTolerance"/>): a calm wearer's steps that COR missed, so that the stretch goes on through them
+        /// (and the wearer's own template learns them). The filled contact carries no side evidence.
+        /// </summary>
+        static List<(double time, double evidence)> WithMissedSteps(List<(double time, double evidence)> contacts)
+        {
+            var steps = new List<double>();
+            for (int i = 1; i < contacts.Count; i++)
+            {
+                double gap = contacts[i].time - contacts[i - 1].time;
+                if (gap >= 0.3 && gap <= 1.0) steps.Add(gap);
+            }
+            if (steps.Count < MinSureContacts) return contacts;
+            double step = GaitMetrics.Median(steps);
+            var filled = new List<(double time, double evidence)>(contacts.Count);
+            for (int i = 0; i < contacts.Count; i++)
+            {
+                if (i > 0)
+                {
+                    double gap = contacts[i].time - contacts[i - 1].time;
+                    if (Math.Abs(gap - 2 * step) <= 2 * RhythmTolerance * step && gap / 2 <= 1.0) filled.Add((contacts[i - 1].time + gap / 2, 0));
+                }
+                filled.Add(contacts[i]);
+            }
+            return filled;
         }
 
         static void AddSure(Recording walk, PhaseMap map, List<(double time, double evidence)> contacts, int from, int to, List<Recording> stretches)
