@@ -175,7 +175,8 @@ namespace HeadGait.Cli
             var copy = ModelFile.Parse(model.ToBytes(), model.Source);
             if (gate == null) copy.Values.Remove(WalkingGate.ModelKey);
             else copy.Set(WalkingGate.ModelKey, gate.Serialize());
-            copy.Set("phase_map", PhaseMap.Parse(copy.Need("phase_map")).WithStanceOf(map).Serialize());
+            // The model's own onsets (its classes) with the fold's stance slope, as the benchmark's AdoptStance.
+            copy.Set("phase_map", PhaseMap.Parse(copy.Need("phase_map")).WithStance(map.StanceSlope, map.ReferenceStridePeriod).Serialize());
             return copy;
         }
 

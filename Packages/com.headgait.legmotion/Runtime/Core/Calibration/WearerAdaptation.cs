@@ -22,18 +22,21 @@ namespace HeadGait.Calibration
         /// <summary>Recalibrate COR's correlation threshold and contact lags on the walk whatever its length (else only from <see cref="CorThresholdSteps"/>).</summary>
         public bool CorThreshold;
         /// <summary>
-        /// Steps from which a walk recalibrates COR's correlation threshold and contact lags: a minute's walk holds about a
-        /// hundred; on one clip of 8-13 steps the threshold overfit (a style's other clips up to 32 points worse).
+        /// Steps from which a walk recalibrates COR's correlation threshold, contact lags and clock lead: a minute's walk
+        /// holds about a hundred; on one clip of 8-13 steps they overfit (a style's other clips up to 32 points worse).
         /// </summary>
         public int CorThresholdSteps = 60;
-        /// <summary>Recalibrate COR's clock lead on the walk: off, as <see cref="CorThreshold"/>.</summary>
+        /// <summary>Recalibrate COR's clock lead on the walk whatever its length (else only from <see cref="CorThresholdSteps"/>, as the threshold).</summary>
         public bool CorLead;
         /// <summary>Recalibrate THR's floor, lag and sideways profile on the walk, then its clock lead.</summary>
         public bool Threshold = true;
         /// <summary>Open THR's and COR's walking gates as far as the wearer's walking needs (bounded): off, it changed nothing on the real walkers' held-out recordings.</summary>
         public bool DetectorGates;
-        /// <summary>Open the learned models' gate as far as the wearer's walking needs (bounded): off, it let a generated walker's head movement show as walking.</summary>
-        public bool LearnedGate;
+        /// <summary>
+        /// Open the learned models' gate as far as the wearer's walking needs (bounded; ankle trackers only, as their labels
+        /// say where the wearer walked; kept only where it pays on the walk, with the input gain).
+        /// </summary>
+        public bool LearnedGate = true;
         /// <summary>Most a calibration opens a walking gate (log-odds; at most <see cref="WearerProfile.MaxGateShift"/>).</summary>
         public double MaxGateShift = WearerProfile.MaxGateShift;
         /// <summary>
@@ -46,7 +49,7 @@ namespace HeadGait.Calibration
         /// refitted, as the labels come from COR's own contacts and a refit followed them into worse contact timing.
         /// </summary>
         public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised
-            ? new AdaptationSettings { Threshold = false, CorThresholdSteps = int.MaxValue }
+            ? new AdaptationSettings { Threshold = false, CorThresholdSteps = int.MaxValue, LearnedGate = false }
             : new AdaptationSettings();
 
         /// <summary>Steps at which THR's refitted values and the trained ones weigh the same (shrinks a short walk's fit towards training).</summary>
@@ -105,23 +108,33 @@ namespace HeadGait.Calibration
             foreach (var t in baseCor.Templates)
                 if (templates.Count < 16) templates.Add(t);
             var cor = baseCor.With(templates: templates, gate: corGate);
-            if (a.CorThreshold || steps >= a.CorThresholdSteps)
+            // Candidates, from the least refitted: the wearer's step alone (its lag the trained templates' median), then
+            // with the threshold, lags and clock lead recalibrated on the walk (a long walk's, or where asked).
+            var corCandidates = new List<CorrelationTemplate>();
+            if (a.CorTemplate)
             {
-                cor = CorrelationClassifier.Calibrate(cor, training);
-                cor = cor.With(minCorrelation: Math.Max(cor.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
-            }
-            else if (a.CorTemplate)
-            {
-                // The wearer's template takes the trained templates' median lag.
                 var lags = new List<double>();
                 foreach (var t in baseCor.Templates) lags.Add(t.ContactLag);
-                templates[0] = templates[0].WithLag(GaitMetrics.Median(lags));
-                cor = cor.With(templates: templates);
+                var own = new List<StepTemplate>(templates);
+                own[0] = own[0].WithLag(GaitMetrics.Median(lags));
+                corCandidates.Add(cor.With(templates: own));
             }
-            if (a.CorLead)
+            bool refitThreshold = a.CorThreshold || steps >= a.CorThresholdSteps, refitLead = a.CorLead || steps >= a.CorThresholdSteps;
+            if (refitThreshold || refitLead)
             {
-                var fitted = cor;
-                cor = cor.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
+                var refit = a.CorTemplate ? cor : baseCor.With(gate: corGate);
+                if (refitThreshold)
+                {
+                    refit = CorrelationClassifier.Calibrate(refit, training);
+                    refit = refit.With(minCorrelation: Math.Max(refit.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
+                }
+                else if (a.CorTemplate) refit = corCandidates[0];
+                if (refitLead)
+                {
+                    var fitted = refit;
+                    refit = refit.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
+                }
+                corCandidates.Add(refit);
             }
 
             var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseThr.Gate;
@@ -140,7 +153,23 @@ namespace HeadGait.Calibration
             var shippedCor = baseCor.With(gate: corGate);
             var shippedThr = baseThr.Clone();
             shippedThr.Gate = thrGate;
-            if (!Pays(() => new CorrelationClassifier(cor), () => new CorrelationClassifier(shippedCor), walk, a.AcceptMargin)) cor = shippedCor;
+            // COR: the candidate that scores the walk best, where it beats the trained COR by the margin (NaN: the most refitted).
+            cor = shippedCor;
+            if (double.IsNaN(a.AcceptMargin))
+            {
+                if (corCandidates.Count > 0) cor = corCandidates[corCandidates.Count - 1];
+            }
+            else
+            {
+                double best = Misclassification(() => new CorrelationClassifier(shippedCor), walk) - a.AcceptMargin;
+                foreach (var candidate in corCandidates)
+                {
+                    double score = Misclassification(() => new CorrelationClassifier(candidate), walk);
+                    if (score > best) continue;
+                    best = score;
+                    cor = candidate;
+                }
+            }
             if (!Pays(() => new ThresholdClassifier(thr), () => new ThresholdClassifier(shippedThr), walk, a.AcceptMargin)) thr = shippedThr;
 
             var learnedGate = LearnedGate(models);
@@ -177,15 +206,14 @@ namespace HeadGait.Calibration
 
         /// <summary>Whether <paramref name="adapted"/> misclassifies the walk less than <paramref name="shipped"/> by at least <paramref name="margin"/> (NaN: always).</summary>
         static bool Pays(Func<IGaitClassifier> adapted, Func<IGaitClassifier> shipped, IReadOnlyList<Recording> walk, double margin)
+            => double.IsNaN(margin) || Misclassification(adapted, walk) <= Misclassification(shipped, walk) - margin;
+
+        /// <summary>Pooled misclassification of the walk by fresh classifiers from <paramref name="make"/>.</summary>
+        static double Misclassification(Func<IGaitClassifier> make, IReadOnlyList<Recording> walk)
         {
-            if (double.IsNaN(margin)) return true;
-            double Score(Func<IGaitClassifier> make)
-            {
-                var parts = new List<GaitMetrics>();
-                foreach (var r in walk) parts.Add(ReplayEvaluator.Run(r, make()).ClassifierMetrics);
-                return GaitMetrics.Pool(parts).MisclassificationRate;
-            }
-            return Score(adapted) <= Score(shipped) - margin;
+            var parts = new List<GaitMetrics>();
+            foreach (var r in walk) parts.Add(ReplayEvaluator.Run(r, make()).ClassifierMetrics);
+            return GaitMetrics.Pool(parts).MisclassificationRate;
         }
 
         /// <summary>THR's refitted floor, lag, sideways profile and clock lead moved from the trained ones by <paramref name="weight"/> of the way.</summary>
