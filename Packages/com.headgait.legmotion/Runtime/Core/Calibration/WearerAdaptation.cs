@@ -4,16 +4,6 @@ using HeadGait.Training;
 
 namespace HeadGait.Calibration
 {
-    /// <summary>
-    /// Fits the classifiers to one wearer from a calibration walk, in C# and in seconds: COR's step templates (the wearer's
-    /// own mean step added in front of the trained ones, then the correlation threshold, contact lags and clock lead
-    /// recalibrated on the walk), THR's floor, lag, sideways profile and clock lead (recalibrated starting from the trained
-    /// settings), how far the walking gates must open to pass the wearer's walking, and the learned models' input gain. The
-    /// walk is labelled either from two ankle trackers (<see cref="FootContactLabeller"/>) or by the shipped COR itself
-    /// (<see cref="SelfLabel"/>). Bounded so that it cannot make standing walk: a gate opens by at most
-    /// <see cref="WearerProfile.MaxGateShift"/>, COR's threshold drops by at most <see cref="MaxThresholdDrop"/>, THR's floor
-    /// to no less than <see cref="MinFloorShare"/> of the trained one.
-    /// </summary>
     /// <summary>Which parts of the classifiers a calibration walk refits (the defaults are the measured choice; see <see cref="WearerAdaptation"/>).</summary>
     public sealed class AdaptationSettings
     {
@@ -30,7 +20,11 @@ namespace HeadGait.Calibration
         public bool CorLead;
         /// <summary>Recalibrate THR's floor, lag and sideways profile on the walk, then its clock lead.</summary>
         public bool Threshold = true;
-        /// <summary>Open THR's and COR's walking gates as far as the wearer's walking needs (bounded): off, it changed nothing on the real walkers' held-out recordings.</summary>
+        /// <summary>
+        /// Open THR's and COR's walking gates as far as the wearer's walking needs (bounded): off. With ankle trackers it
+        /// helped one style and cost another; self-supervised on real glasses it showed standing, head movement and picking up
+        /// as walking more, and the wearer's own stillness, which could bound it, is not recorded at calibration.
+        /// </summary>
         public bool DetectorGates;
         /// <summary>
         /// Open the learned models' gate as far as the wearer's walking needs (bounded; ankle trackers only, as their labels
@@ -64,9 +58,19 @@ namespace HeadGait.Calibration
         public bool LabelWithGateOpen = true;
         /// <summary>Self-supervised: a step COR missed in a steady rhythm (a gap of two steps) is filled in (<see cref="WearerAdaptation.SelfLabel"/>).</summary>
         public bool FillMissedSteps = true;
-
     }
 
+    /// <summary>
+    /// Fits the classifiers to one wearer from a calibration walk, in C# and in seconds: COR's step templates (the wearer's
+    /// own mean step added in front of the trained ones; from <see cref="AdaptationSettings.CorThresholdSteps"/> steps also
+    /// the correlation threshold, contact lags and clock lead recalibrated on the walk, whichever scores it best), THR's
+    /// floor, lag, sideways profile and clock lead (recalibrated starting from the trained settings), how far the learned
+    /// models' walking gate must open to pass the wearer's walking, and their input gain. The walk is labelled either from
+    /// two ankle trackers (<see cref="FootContactLabeller"/>) or by the shipped COR itself (<see cref="SelfLabel"/>).
+    /// Bounded so that it cannot make standing walk: a gate opens by at most <see cref="WearerProfile.MaxGateShift"/>, COR's
+    /// threshold drops by at most <see cref="MaxThresholdDrop"/> (none), THR's floor to no less than
+    /// <see cref="MinFloorShare"/> of the trained one.
+    /// </summary>
     public static class WearerAdaptation
     {
         /// <summary>Steps a calibration walk must hold.</summary>
@@ -297,7 +301,9 @@ namespace HeadGait.Calibration
         public const double RhythmTolerance = 0.25;
 
         /// <summary>
-        /// Self-supervised labels (no foot references): the walk replayed through the shipped COR; every stretch of at least
+        /// Self-supervised labels (no foot references): the walk replayed through the shipped COR (its walking gate open
+        /// where <paramref name="gateOpen"/>; a step it missed in a steady rhythm filled in where <paramref name="fillMissed"/>,
+        /// see <see cref="WithMissedSteps"/>); every stretch of at least
         /// <see cref="MinSureContacts"/> contacts in a clear rhythm (each step within <see cref="RhythmTolerance"/> of the
         /// stretch's median, 0.3 to 1 s) becomes a labelled walking recording, its feet alternating from the side COR
         /// named most often and each foot's phases spread over its stride by the trained phase map. Empty when none is sure.
