@@ -30,6 +30,11 @@ namespace HeadGait.Cli
         static Option<string> ProfilesOption() => new Option<string>("--profiles") { Description = "folder of wearer profiles", DefaultValueFactory = _ => "profiles" };
         static Option<string> WearerOption() => new Option<string>("--wearer") { Description = "wearer id (letters, digits, '-', '_', '.')", Required = true };
 
+        static Option<string> AdaptOption() => new Option<string>("--adapt")
+        {
+            Description = "what to refit, on top of the defaults: cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, fill-missed (no-X: off), prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS; self: or feet: for one source",
+        };
+
         static Command Fit()
         {
             var session = new Argument<string>("session") { Description = "a calibration session folder (head.csv, and left-ankle.csv and right-ankle.csv from ankle trackers)" };
@@ -75,13 +80,13 @@ namespace HeadGait.Cli
 
         static Command Session()
         {
-            var bvh = new Argument<string>("bvh") { Description = "a motion-capture clip (BVH)" };
+            var bvh = new Argument<string[]>("bvh") { Description = "motion-capture clips (BVH); several are joined, in order, into one walk", Arity = ArgumentArity.OneOrMore };
             var output = new Option<string>("--out") { Description = "session folder to write", Required = true };
             var rate = new Option<double>("--ankle-rate") { Description = "ankle trackers' frame rate (Hz)", DefaultValueFactory = _ => 72 };
-            var c = new Command("session", "Makes a calibration session (head acceleration plus two ankle trackers' poses) from motion capture.") { bvh, output, rate };
+            var c = new Command("session", "Makes a calibration session (head acceleration plus two ankle trackers' poses) from motion capture; several clips are joined into one walk.") { bvh, output, rate };
             c.SetAction(parse =>
             {
-                var s = CalibrationSession.FromMotionCapture(BvhFile.Load(parse.GetValue(bvh)), parse.GetValue(rate));
+                var s = CalibrationSession.FromMotionCapture(parse.GetValue(bvh).Select(BvhFile.Load), parse.GetValue(rate));
                 s.Save(parse.GetValue(output));
                 Console.WriteLine($"{parse.GetValue(output)}: {s.Head.Samples.Count} head samples, {s.LeftAnkle.Count} + {s.RightAnkle.Count} ankle poses");
                 return 0;
@@ -95,8 +100,9 @@ namespace HeadGait.Cli
             var models = ModelsOption();
             var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a list or all", DefaultValueFactory = _ => "all" };
             var seconds = new Option<double>("--seconds") { Description = "calibrate on this much of each person's walking file (s)", DefaultValueFactory = _ => 60 };
-            var c = new Command("glasses", "Calibrates each person (self-supervised) on the start of their walking file and replays the rest and their still activities with and without the profile.") { data, models, classifier, seconds };
-            c.SetAction(parse => CalibrationGlasses.Run(parse.GetValue(data), parse.GetValue(models), Classifiers.Parse(parse.GetValue(classifier)), parse.GetValue(seconds)));
+            var adapt = AdaptOption();
+            var c = new Command("glasses", "Calibrates each person (self-supervised) on the start of their walking file and replays the rest and their still activities with and without the profile.") { data, models, classifier, seconds, adapt };
+            c.SetAction(parse => CalibrationGlasses.Run(parse.GetValue(data), parse.GetValue(models), Classifiers.Parse(parse.GetValue(classifier)), parse.GetValue(seconds), parse.GetValue(adapt)));
             return c;
         }
 
@@ -109,12 +115,16 @@ namespace HeadGait.Cli
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => Training.GaitTraining.DefaultAugmentedCopies };
             var cache = new Option<string>("--fold-cache") { Description = "keep each style fold's THR and COR here and reuse them (delete it when training changes)" };
             var rate = new Option<double>("--ankle-rate") { Description = "ankle trackers' frame rate (Hz)", DefaultValueFactory = _ => 72 };
-            var c = new Command("benchmark", "Leave one style out: calibrate on one walking recording of the held-out style (from its motion capture, with ankle trackers and self-supervised) and score the style's other recordings against the uncalibrated classifiers.")
+            var seconds = new Option<double>("--walk-seconds") { Description = "the calibration walk: the held-out style's straight walks and turns joined up to this long (s); 0: its first straight walk alone", DefaultValueFactory = _ => 60 };
+            var cvModels = new Option<string>("--cv-models") { Description = "judge the SVM and BLSTM with the style-fold models `headgait train --cv style --cv-only` wrote under DIR/style/<fold>/ (e.g. training/cv-models); default: the shipped models (not held out)" };
+            var adapt = AdaptOption();
+            var c = new Command("benchmark", "Leave one style out: calibrate on up to a minute of the held-out style's walking (from its motion capture, with ankle trackers and self-supervised) and score the style's other recordings against the uncalibrated classifiers.")
             {
-                data, bvh, models, classifier, augment, cache, rate,
+                data, bvh, models, classifier, augment, cache, rate, seconds, cvModels, adapt,
             };
             c.SetAction(parse => CalibrationBenchmark.Run(parse.GetValue(data), parse.GetValue(bvh), parse.GetValue(models), Classifiers.Parse(parse.GetValue(classifier)),
-                parse.GetValue(augment), parse.GetValue(cache), parse.GetValue(rate)));
+                parse.GetValue(augment), parse.GetValue(cache), parse.GetValue(rate), OptionValues.Number(parse.GetValue(seconds), "--walk-seconds", 0, 600),
+                parse.GetValue(cvModels) == null ? null : OptionValues.Folder(parse.GetValue(cvModels), "--cv-models"), parse.GetValue(adapt)));
             return c;
         }
     }

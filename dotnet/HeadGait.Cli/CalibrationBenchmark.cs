@@ -23,8 +23,9 @@ namespace HeadGait.Cli
             public readonly List<GaitMetrics> All = new List<GaitMetrics>(), Standing = new List<GaitMetrics>();
         }
 
-        public static int Run(string[] data, string bvhFolder, string modelFolder, List<string> names, int augment, string cache, double ankleRate)
+        public static int Run(string[] data, string bvhFolder, string modelFolder, List<string> names, int augment, string cache, double ankleRate, double walkSeconds, string cvModels, string adapt)
         {
+            var (feetSettings, selfSettings) = Settings(adapt);
             if (!Directory.Exists(bvhFolder)) throw new UsageException($"no such folder: {bvhFolder}");
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false).Where(r => r.HasTruth).ToList();
             if (recordings.Count == 0) throw new UsageException("no labelled recordings in --data");
@@ -36,56 +37,77 @@ namespace HeadGait.Cli
             var notes = new List<string>();
             var cadence = new Dictionary<string, double>();
             Console.WriteLine($"HeadGait calibration benchmark: {recordings.Count} labelled recordings, motion capture from {bvhFolder}, ankle trackers at {ankleRate:0} Hz");
-            Console.WriteLine("SVM and BLSTM: the shipped models, trained on every style (NOT held out); THR and COR trained inside each fold.");
+            Console.WriteLine(walkSeconds > 0
+                ? $"Calibration walk: the held-out style's straight walks and turns in turn, joined into one session, up to {walkSeconds:F0} s (at most half of the style's forward walks; the rest are scored)"
+                : "Calibration walk: the held-out style's first straight walk (one clip)");
+            Console.WriteLine(cvModels == null
+                ? "SVM and BLSTM: the shipped models, trained on every style (NOT held out); THR and COR trained inside each fold."
+                : $"SVM and BLSTM: the style-fold models under {Path.Combine(cvModels, CrossValidation.ByStyle)} (held out), with the fold's walking gate and stance; THR and COR trained inside each fold.");
+            if (adapt != null) Console.WriteLine($"Refitted (--adapt {adapt}): ankle trackers {Describe(feetSettings)}; self-supervised {Describe(selfSettings)}");
             foreach (var fold in folds)
             {
                 var test = fold.Test.Select(n => byName[n]).OrderBy(r => r.Name, StringComparer.Ordinal).ToList();
                 var steps = test.SelectMany(r => PhaseEvents.TruthSteps(r)).Select(s => s.Duration).ToList();
                 if (steps.Count == 0) continue;
                 cadence[fold.Name] = GaitMetrics.Median(steps);
-                var calibration = test.FirstOrDefault(r => IsStraightWalk(r.Name) && BvhOf(r, bvhFolder) != null);
-                if (calibration == null)
+                var calibration = CalibrationClips(test, bvhFolder, walkSeconds);
+                if (calibration.Count == 0)
                 {
                     notes.Add($"{fold.Name}: no straight walk with its motion capture in {bvhFolder}; not calibrated");
                     continue;
                 }
                 var watch = System.Diagnostics.Stopwatch.StartNew();
-                var models = FoldModels(fold, recordings.Where(r => !fold.IsTest(r.Name)).ToList(), augment, cache, names);
-                models.Svm = shipped.Svm;
-                models.Blstm = shipped.Blstm;
+                var (models, gates, map) = FoldModels(fold, recordings.Where(r => !fold.IsTest(r.Name)).ToList(), augment, cache);
+                if (cvModels == null)
+                {
+                    models.Svm = shipped.Svm;
+                    models.Blstm = shipped.Blstm;
+                }
+                else
+                {
+                    string dir = Path.Combine(cvModels, CrossValidation.ByStyle, TrainCommand.Safe(fold.Name));
+                    var learned = Directory.Exists(dir) ? GaitModels.Load(dir) : null;
+                    models.Svm = InFold(learned?.Svm, gates.Learned, map);
+                    models.Blstm = InFold(learned?.Blstm, gates.Learned, map);
+                    foreach (var clf in names.Where(n => (n == "svm" && models.Svm == null) || (n == "blstm" && models.Blstm == null)))
+                        notes.Add($"{fold.Name}: no {clf} fold model under {dir}; {clf} not scored for this style");
+                }
                 double trainSeconds = watch.Elapsed.TotalSeconds;
-                var session = CalibrationSession.FromMotionCapture(BvhFile.Load(BvhOf(calibration, bvhFolder)), ankleRate);
+                var parts = calibration.Select(r => CalibrationSession.FromMotionCapture(BvhFile.Load(BvhOf(r, bvhFolder)), ankleRate)).ToList();
+                var agreements = parts.Select((p, i) => Agreement(p.Labelled(), calibration[i])).ToList();
+                var session = CalibrationSession.Join(parts);
                 var labelled = session.Labelled();
-                var (agreement, contactMs) = Agreement(labelled, calibration);
                 watch.Restart();
                 WearerProfile feet = null;
                 try
                 {
-                    feet = WearerAdaptation.Fit(models, new[] { labelled }, "style", WearerProfile.FromFootReferences);
+                    feet = WearerAdaptation.Fit(models, new[] { labelled }, "style", WearerProfile.FromFootReferences, feetSettings);
                 }
                 catch (InvalidOperationException e)
                 {
                     notes.Add($"{fold.Name}: not fitted with the ankle trackers, scored with the shipped models ({e.Message})");
                 }
                 double feetSeconds = watch.Elapsed.TotalSeconds;
-                var sure = WearerAdaptation.SelfLabel(models, session.Head);
+                var sure = WearerAdaptation.SelfLabel(models, session.Head, selfSettings.LabelWithGateOpen, selfSettings.FillMissedSteps);
                 int sureSteps = sure.Sum(r => PhaseEvents.TruthSteps(r).Count);
                 WearerProfile self = null;
                 try
                 {
-                    self = WearerAdaptation.Fit(models, sure, "style", WearerProfile.SelfSupervised);
+                    self = WearerAdaptation.Fit(models, sure, "style", WearerProfile.SelfSupervised, selfSettings);
                 }
                 catch (InvalidOperationException e)
                 {
                     notes.Add($"{fold.Name}: self-supervised not fitted, scored with the shipped models ({e.Message})");
                 }
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                    "{0,-14} calibrated on {1} ({2:F1} s, {3} steps; ankle labels agree with the converter's on {4:F1} % of samples, contacts {5:F0} ms apart (median)); self-supervised {6} sure steps; fit {7:F1} s; fold training {8:F0} s",
-                    fold.Name, calibration.Name, calibration.Duration, PhaseEvents.TruthSteps(labelled).Count, 100 * agreement, contactMs, sureSteps, feetSeconds, trainSeconds));
+                    "{0,-14} calibrated on {1} ({2} clip{3}, {4:F1} s, {5} steps; ankle labels agree with the converter's on {6:F1} % of samples, contacts {7:F0} ms apart (median)); self-supervised {8} sure steps; fit {9:F1} s; fold training {10:F0} s",
+                    fold.Name, calibration[0].Name + (calibration.Count > 1 ? " ..." : ""), calibration.Count, calibration.Count > 1 ? "s" : "", calibration.Sum(r => r.Duration),
+                    PhaseEvents.TruthSteps(labelled).Count, 100 * agreements.Average(a => a.Agreement), GaitMetrics.Median(agreements.Select(a => a.ContactMs).ToList()), sureSteps, feetSeconds, trainSeconds));
+                Console.WriteLine("  fitted: ankle trackers " + Fitted(feet, models) + "; self-supervised " + Fitted(self, models));
                 // A walk that cannot be fitted leaves the wearer with the shipped models, as the product does.
                 var variantModels = new[] { models, feet?.Apply(models) ?? models, self?.Apply(models) ?? models };
                 // Each recording replayed by fresh classifiers; in parallel, as every replay is independent.
-                var scored = test.Where(r => r != calibration).AsParallel().AsOrdered().WithDegreeOfParallelism(Math.Max(1, Environment.ProcessorCount))
+                var scored = test.Where(r => !calibration.Contains(r)).AsParallel().AsOrdered().WithDegreeOfParallelism(Math.Max(1, Environment.ProcessorCount))
                     .Select(rec => (rec, metrics: names.SelectMany(clf => Enumerable.Range(0, Variants.Length).Select(v =>
                     {
                         if (variantModels[v] == null) return (clf, v, (GaitMetrics)null);
@@ -115,6 +137,114 @@ namespace HeadGait.Cli
 
         static bool IsStraightWalk(string name) => name.StartsWith("bn_wk_", StringComparison.Ordinal) || name.StartsWith("bn1_walk_", StringComparison.Ordinal);
 
+        static bool IsTurn(string name) => name.StartsWith("bn_tl_", StringComparison.Ordinal) || name.StartsWith("bn_tr_", StringComparison.Ordinal);
+
+        /// <summary>
+        /// The held-out style's calibration walk: its straight walks and turns (forward walking with its motion capture) taken
+        /// in turn (straight, turn, straight, turn...) until they last <paramref name="seconds"/>; at least one (the first
+        /// straight walk: all of it when <paramref name="seconds"/> is 0), at most half of the style's forward walks, so that
+        /// the rest of them are scored.
+        /// </summary>
+        static List<Recording> CalibrationClips(List<Recording> test, string bvhFolder, double seconds)
+        {
+            var straight = test.Where(r => IsStraightWalk(r.Name) && BvhOf(r, bvhFolder) != null).ToList();
+            if (straight.Count == 0) return new List<Recording>();
+            var turns = test.Where(r => IsTurn(r.Name) && BvhOf(r, bvhFolder) != null)
+                .OrderBy(r => r.Name.Substring(6), StringComparer.Ordinal).ThenBy(r => r.Name, StringComparer.Ordinal).ToList(); // left and right turns in turn
+            var order = new List<Recording>();
+            for (int i = 0; i < Math.Max(straight.Count, turns.Count); i++)
+            {
+                if (i < straight.Count) order.Add(straight[i]);
+                if (i < turns.Count) order.Add(turns[i]);
+            }
+            int most = Math.Max(1, (straight.Count + turns.Count) / 2);
+            var walk = new List<Recording> { order[0] };
+            double total = order[0].Duration;
+            for (int i = 1; i < order.Count && walk.Count < most && total < seconds; i++)
+            {
+                walk.Add(order[i]);
+                total += order[i].Duration;
+            }
+            return walk;
+        }
+
+        /// <summary>The fold's learned model with the fold's walking gate and stance written in (fold models may predate them or hold ones from other data).</summary>
+        static ModelFile InFold(ModelFile model, WalkingGate gate, PhaseMap map)
+        {
+            if (model == null) return null;
+            var copy = ModelFile.Parse(model.ToBytes(), model.Source);
+            if (gate == null) copy.Values.Remove(WalkingGate.ModelKey);
+            else copy.Set(WalkingGate.ModelKey, gate.Serialize());
+            // The model's own onsets (its classes) with the fold's stance slope, as the benchmark's AdoptStance.
+            copy.Set("phase_map", PhaseMap.Parse(copy.Need("phase_map")).WithStance(map.StanceSlope, map.ReferenceStridePeriod).Serialize());
+            return copy;
+        }
+
+        /// <summary>
+        /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
+        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain,
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
+        /// self: or feet: before an item applies it to that source only.
+        /// </summary>
+        internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
+        {
+            var feet = AdaptationSettings.For(WearerProfile.FromFootReferences);
+            var self = AdaptationSettings.For(WearerProfile.SelfSupervised);
+            if (string.IsNullOrWhiteSpace(adapt)) return (feet, self);
+            foreach (var raw in adapt.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+            {
+                string item = raw;
+                var targets = new List<AdaptationSettings> { feet, self };
+                if (item.StartsWith("self:", StringComparison.Ordinal)) { targets.Remove(feet); item = item.Substring(5); }
+                else if (item.StartsWith("feet:", StringComparison.Ordinal)) { targets.Remove(self); item = item.Substring(5); }
+                bool on = !item.StartsWith("no-", StringComparison.Ordinal);
+                string key = on ? item : item.Substring(3);
+                foreach (var a in targets)
+                {
+                    if (key.StartsWith("prior=", StringComparison.Ordinal)) a.ThresholdPriorSteps = Number(key.Substring(6));
+                    else if (key.StartsWith("margin=", StringComparison.Ordinal)) a.AcceptMargin = Number(key.Substring(7));
+                    else if (key.StartsWith("gate-cap=", StringComparison.Ordinal)) a.MaxGateShift = Number(key.Substring(9));
+                    else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
+                    else
+                        switch (key)
+                        {
+                            case "cor-template": a.CorTemplate = on; break;
+                            case "cor-threshold": a.CorThreshold = on; break;
+                            case "cor-lead": a.CorLead = on; break;
+                            case "thr": a.Threshold = on; break;
+                            case "gates": a.DetectorGates = on; break;
+                            case "learned-gate": a.LearnedGate = on; break;
+                            case "learned-gain": a.LearnedGain = on; break;
+                            case "open-labels": a.LabelWithGateOpen = on; break;
+                            case "fill-missed": a.FillMissedSteps = on; break;
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS; no- turns one off; self: or feet: for one source)");
+                        }
+                }
+            }
+            return (feet, self);
+
+            static double Number(string text) => double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out var v) && !double.IsInfinity(v) && !(v < 0)
+                ? v : throw new UsageException($"--adapt: '{text}' is not a number of 0 or more (or NaN for margin)");
+        }
+
+        internal static string Describe(AdaptationSettings a) => string.Join(" ", new[]
+        {
+            a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
+            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}",
+        }.Where(x => x != null));
+
+        /// <summary>What a profile changed against the fold's models, in a few words.</summary>
+        static string Fitted(WearerProfile p, GaitModels models)
+        {
+            if (p == null) return "not fitted";
+            var ci = CultureInfo.InvariantCulture;
+            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s), THR {4}, learned gain {5:F2}{6}", p.Steps,
+                p.Correlation.Templates.Count > models.Correlation.Templates.Count ? "own step" : "as trained", p.Correlation.MinCorrelation, p.Correlation.ClockLead,
+                p.Threshold.Serialize() == models.Threshold.Serialize() ? "as trained" : string.Format(ci, "floor {0:F2} (trained {1:F2})", p.Threshold.Floor, models.Threshold.Floor),
+                p.LearnedGain, p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "");
+        }
+
         /// <summary>The BVH a converted recording names in its source line, when it is in the folder.</summary>
         static string BvhOf(Recording r, string folder)
         {
@@ -134,19 +264,28 @@ namespace HeadGait.Cli
             return (FootContactLabeller.Agreement(fromAnkles, converted), offsets.Count > 0 ? GaitMetrics.Median(offsets) : double.NaN);
         }
 
-        static GaitModels FoldModels(Fold fold, List<Recording> train, int augment, string cache, List<string> names)
+        /// <summary>THR and COR trained on the fold's training styles, with the fold's gates and phase map (from the cache when it holds them).</summary>
+        static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) FoldModels(Fold fold, List<Recording> train, int augment, string cache)
         {
             string dir = cache == null ? null : Path.Combine(cache, TrainCommand.Safe(fold.Name));
-            if (dir != null && File.Exists(Path.Combine(dir, GaitModels.ThresholdFile)) && File.Exists(Path.Combine(dir, GaitModels.CorrelationFile)))
-                return GaitModels.Load(dir);
-            var (models, _, _) = BenchmarkCommand.TrainFold(train, augment, true, true);
+            string gateFile = dir == null ? null : Path.Combine(dir, "learned-gate.txt"), mapFile = dir == null ? null : Path.Combine(dir, "phase-map.txt");
+            if (dir != null && File.Exists(Path.Combine(dir, GaitModels.ThresholdFile)) && File.Exists(Path.Combine(dir, GaitModels.CorrelationFile)) && File.Exists(gateFile) && File.Exists(mapFile))
+            {
+                var cached = GaitModels.Load(dir);
+                string gateText = File.ReadAllText(gateFile).Trim();
+                var learnedGate = gateText.Length == 0 ? null : WalkingGate.Parse(gateText);
+                return (cached, (cached.Threshold.Gate, cached.Correlation.Gate, learnedGate), PhaseMap.Parse(File.ReadAllText(mapFile).Trim()));
+            }
+            var trained = BenchmarkCommand.TrainFold(train, augment, true, true);
             if (dir != null)
             {
                 Directory.CreateDirectory(dir);
-                models.Threshold.Save(Path.Combine(dir, GaitModels.ThresholdFile));
-                models.Correlation.Save(Path.Combine(dir, GaitModels.CorrelationFile));
+                trained.Models.Threshold.Save(Path.Combine(dir, GaitModels.ThresholdFile));
+                trained.Models.Correlation.Save(Path.Combine(dir, GaitModels.CorrelationFile));
+                File.WriteAllText(gateFile, trained.Gates.Learned?.Serialize() ?? "");
+                File.WriteAllText(mapFile, trained.Map.Serialize());
             }
-            return models;
+            return trained;
         }
 
         static void Print(Dictionary<(string style, string clf, string variant), Cell> cells, Dictionary<string, double> cadence, List<string> names)
@@ -158,7 +297,7 @@ namespace HeadGait.Cli
             Console.WriteLine($"{"style",-14} {"step_s",6} {"clf",-6} {"none%",14} {"feet%",14} {"d_feet",7} {"self%",14} {"d_self",7}");
             string Cellf(Cell c) => c == null ? "-" : string.Format(CultureInfo.InvariantCulture, "{0:F1}/{1}", 100 * GaitMetrics.Pool(c.All).MisclassificationRate,
                 c.Standing.Count == 0 ? "-" : (100 * GaitMetrics.Pool(c.Standing).StandingAsWalking).ToString("F1", CultureInfo.InvariantCulture));
-            string Delta(Cell a, Cell b) => a == null || b == null ? "-" : (100 * (GaitMetrics.Pool(b.All).MisclassificationRate - GaitMetrics.Pool(a.All).MisclassificationRate)).ToString("+0.0;-0.0", CultureInfo.InvariantCulture);
+            string Delta(Cell a, Cell b) => a == null || b == null ? "-" : (100 * (GaitMetrics.Pool(b.All).MisclassificationRate - GaitMetrics.Pool(a.All).MisclassificationRate)).ToString("+0.0;-0.0;+0.0", CultureInfo.InvariantCulture);
             Cell Get(string s, string c, string v) => cells.TryGetValue((s, c, v), out var x) ? x : null;
             foreach (var clf in names)
             {

@@ -15,8 +15,10 @@ namespace HeadGait.Cli
     /// </summary>
     static class CalibrationGlasses
     {
-        public static int Run(string[] data, string modelFolder, List<string> names, double seconds)
+        public static int Run(string[] data, string modelFolder, List<string> names, double seconds, string adapt)
         {
+            var settings = CalibrationBenchmark.Settings(adapt).Self;
+            if (adapt != null) Console.WriteLine($"Refitted (--adapt {adapt}): {CalibrationBenchmark.Describe(settings)}");
             var recordings = Inputs.LoadRecordings(Inputs.Expand(data, "*.csv"), false);
             string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
             var shipped = Classifiers.Load(folder);
@@ -41,11 +43,11 @@ namespace HeadGait.Cli
                 WearerProfile profile;
                 try
                 {
-                    profile = new CalibrationSession(first).Fit(shipped, Safe(person.Key), selfSupervised: true);
+                    profile = new CalibrationSession(first).Fit(shipped, Safe(person.Key), selfSupervised: true, settings);
                 }
                 catch (InvalidOperationException e)
                 {
-                    notes.Add($"{person.Key}: not calibrated ({e.Message})");
+                    notes.Add($"{person.Key}: not calibrated ({e.Message}); {ContactRhythm(shipped, first)}");
                     continue;
                 }
                 var adapted = profile.Apply(shipped);
@@ -94,6 +96,22 @@ namespace HeadGait.Cli
             }
             foreach (var n in notes) Console.WriteLine("note: " + n);
             return 0;
+        }
+
+        /// <summary>Why a walk gave too few sure steps: how many contacts COR (gate open) found in it and how far apart.</summary>
+        static string ContactRhythm(GaitModels models, Recording walk)
+        {
+            var cor = new CorrelationClassifier(models.Correlation.With(gate: WalkingGate.Open));
+            var times = new List<double>();
+            cor.ContactDetected += (t, e, r, k) => times.Add(t);
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
+            foreach (var s in walk.Samples) pre.Push(s.Imu, w => cor.Classify(w));
+            var gaps = times.Zip(times.Skip(1), (a, b) => b - a).ToList();
+            if (gaps.Count == 0) return "COR (gate open) found no steps";
+            gaps.Sort();
+            double Q(double q) => gaps[(int)Math.Round(q * (gaps.Count - 1))];
+            return string.Format(CultureInfo.InvariantCulture, "COR (gate open) found {0} contacts, {1:F2} / {2:F2} / {3:F2} s apart (quartiles), {4} of {5} gaps 0.3-1 s",
+                times.Count, Q(0.25), Q(0.5), Q(0.75), gaps.Count(g => g >= 0.3 && g <= 1.0), gaps.Count);
         }
 
         static void Add<TKey>(Dictionary<TKey, List<RealWorldScore>> d, TKey key, RealWorldScore s)

@@ -154,6 +154,13 @@ namespace HeadGait.Tests.Cli
             yield return Case(2, "study", "generate", "OUT", "--seed", "garbage");
             yield return Case(2, "study", "summarize");
             yield return Case(2, "clips", "--template", "MISSING");
+            // calibrate benchmark / glasses
+            yield return Case(2, "calibrate", "benchmark", "--data", "DATA", "--bvh", "DATA", "--walk-seconds", "-1");
+            yield return Case(2, "calibrate", "benchmark", "--data", "DATA", "--bvh", "DATA", "--walk-seconds", "NaN");
+            yield return Case(2, "calibrate", "benchmark", "--data", "DATA", "--bvh", "DATA", "--cv-models", "MISSING");
+            yield return Case(2, "calibrate", "benchmark", "--data", "DATA", "--bvh", "DATA", "--adapt", "garbage");
+            yield return Case(2, "calibrate", "benchmark", "--data", "DATA", "--bvh", "DATA", "--adapt", "prior=-1");
+            yield return Case(2, "calibrate", "glasses", "--data", "DATA", "--adapt", "gate-cap=x");
             yield return Case(2, "generate", "--out");
             // Empty values anywhere are usage errors (before: an empty --out wrote into the working folder).
             yield return Case(2, "generate", "--out", "");

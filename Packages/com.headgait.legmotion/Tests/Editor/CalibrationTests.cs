@@ -62,6 +62,40 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void WalksRecordedApartJoinIntoOneSessionOnOneClock()
+        {
+            // The calibration benchmark's minute is made of clips recorded apart: joined, they must read as one walk (one
+            // clock, the ankles going on from where they stopped) that the ankle labeller labels like each clip alone.
+            var wearer = Wearer();
+            var parts = new List<CalibrationSession>();
+            var truths = new List<CalibrationSession>();
+            foreach (ulong seed in new[] { 84UL, 85UL, 86UL })
+            {
+                var walk = WalkingStreamGenerator.Generate("part" + seed, wearer, new StreamScript().Stand(1).Walk(8, Foot.Left).Stand(1), seed);
+                var (left, right) = SyntheticAnkles.From(walk, 72, seed);
+                parts.Add(new CalibrationSession(Unlabelled(walk), left, right));
+                truths.Add(new CalibrationSession(walk));
+            }
+            var joined = CalibrationSession.Join(parts);
+            var head = joined.Head.Samples;
+            Assert.That(head.Count, Is.EqualTo(parts.Sum(p => p.Head.Samples.Count)));
+            var steps = head.Zip(head.Skip(1), (a, b) => b.Imu.Time - a.Imu.Time).ToList();
+            Assert.That(steps.Min(), Is.GreaterThan(0), "one clock, forward only");
+            Assert.That(steps.Count(d => Math.Abs(d - CalibrationSession.JoinGapSeconds) < 1e-9), Is.EqualTo(parts.Count - 1), "the parts a join gap apart");
+            foreach (var ankle in new[] { joined.LeftAnkle, joined.RightAnkle })
+            {
+                double fastest = ankle.Zip(ankle.Skip(1), (a, b) => Math.Sqrt(Math.Pow(b.Px - a.Px, 2) + Math.Pow(b.Pz - a.Pz, 2)) / (b.Time - a.Time)).Max();
+                Assert.That(fastest, Is.LessThan(10), "the ankles go on from where the last part left them (m/s)");
+            }
+            var truth = CalibrationSession.Join(truths).Head;
+            var labelled = joined.Labelled();
+            Assert.That(Agreement(labelled, truth), Is.GreaterThan(0.8));
+            Assert.That(PhaseEvents.TruthSteps(labelled).Count, Is.EqualTo(PhaseEvents.TruthSteps(truth).Count).Within(6));
+            var mixed = Assert.Throws<ArgumentException>(() => CalibrationSession.Join(new[] { parts[0], truths[1] }));
+            Assert.That(mixed.Message, Does.Contain("ankle streams"));
+        }
+
+        [Test]
         public void BrokenAnkleStreamsAreRefusedNamingTheStream()
         {
             var walk = Walk(Wearer());
@@ -230,6 +264,27 @@ namespace HeadGait.Tests
                 if (!Scores(recordings[i % recordings.Count]).SequenceEqual(sequential[i % recordings.Count])) System.Threading.Interlocked.Increment(ref differing);
             });
             Assert.That(differing, Is.Zero);
+        }
+
+        [Test]
+        public void ACalmWearerWhoseStepsCorHalfMissesStillGivesSureSteps()
+        {
+            // A real glasses wearer (ClassyGlass dataset 2, user 5) walks slowly and gently: in the first minute COR, gate
+            // open, finds about 60 contacts, a quarter of them two steps apart, so no stretch kept a steady rhythm and the
+            // wearer could not be calibrated without foot references. With the missed steps filled in, the stretches run
+            // on, at the step rhythm the signal itself shows.
+            string file = Path.Combine(TestData.SharedData("glasses-train"), "cg2_u05_e028_walking.csv");
+            if (!File.Exists(file)) Assert.Ignore($"{file} not found");
+            var walk = RecordingCsv.Load(file);
+            double end = walk.Samples[0].Imu.Time + 60;
+            var first = new Recording("first-minute", walk.Samples.Where(s => s.Imu.Time < end).ToList());
+            int Steps(List<Recording> sure) => sure.Sum(r => PhaseEvents.TruthSteps(r).Count);
+            Assert.That(Steps(WearerAdaptation.SelfLabel(Shipped, first, fillMissed: false)), Is.LessThan(WearerAdaptation.MinSteps), "without filling in");
+            var filled = WearerAdaptation.SelfLabel(Shipped, first);
+            Assert.That(Steps(filled), Is.GreaterThanOrEqualTo(20));
+            var durations = filled.SelectMany(r => PhaseEvents.TruthSteps(r)).Select(s => s.Duration).ToList();
+            double signalStep = 60 / RhythmReference.Of(first).MedianCadence;
+            Assert.That(GaitMetrics.Median(durations), Is.EqualTo(signalStep).Within(0.15 * signalStep), "the sure steps keep the signal's own rhythm");
         }
 
         [Test]

@@ -39,11 +39,12 @@ namespace HeadGait.Calibration
         /// The profile this walk gives: fitted on the labels from the ankle streams when there are any, otherwise on the
         /// steps the shipped COR is sure of (<see cref="WearerAdaptation.SelfLabel"/>).
         /// </summary>
-        public WearerProfile Fit(GaitModels models, string wearer, bool selfSupervised = false)
+        public WearerProfile Fit(GaitModels models, string wearer, bool selfSupervised = false, AdaptationSettings settings = null)
         {
-            if (HasFootReferences && !selfSupervised) return WearerAdaptation.Fit(models, new[] { Labelled() }, wearer, WearerProfile.FromFootReferences);
-            var sure = WearerAdaptation.SelfLabel(models, Head);
-            return WearerAdaptation.Fit(models, sure, wearer, WearerProfile.SelfSupervised);
+            if (HasFootReferences && !selfSupervised) return WearerAdaptation.Fit(models, new[] { Labelled() }, wearer, WearerProfile.FromFootReferences, settings);
+            var a = settings ?? AdaptationSettings.For(WearerProfile.SelfSupervised);
+            var sure = WearerAdaptation.SelfLabel(models, Head, a.LabelWithGateOpen, a.FillMissedSteps);
+            return WearerAdaptation.Fit(models, sure, wearer, WearerProfile.SelfSupervised, a);
         }
 
         /// <summary>
@@ -60,6 +61,76 @@ namespace HeadGait.Calibration
             foreach (var kv in head.Metadata) headOnly.Metadata[kv.Key] = kv.Value;
             var (left, right) = MocapConverter.ConvertAnkles(bvh, ankleRate, settings);
             return new CalibrationSession(headOnly, Poses(left), Poses(right));
+        }
+
+        /// <summary>
+        /// Several walks from motion capture joined into one session (<see cref="Join"/>): the minute a wearer walks made of
+        /// the clips a corpus cuts it into.
+        /// </summary>
+        public static CalibrationSession FromMotionCapture(IEnumerable<BvhFile> clips, double ankleRate = 72, MocapSettings settings = null)
+        {
+            var parts = new List<CalibrationSession>();
+            foreach (var bvh in clips) parts.Add(FromMotionCapture(bvh, ankleRate, settings));
+            return Join(parts);
+        }
+
+        /// <summary>
+        /// Seconds without samples put between two joined walks: longer than the pipeline bridges (its windows start afresh,
+        /// as after a dropout), shorter than the ankle labeller's <see cref="FootContactLabeller.MaxGapSeconds"/>.
+        /// </summary>
+        public const double JoinGapSeconds = 0.2;
+
+        /// <summary>
+        /// Walks recorded apart as one session on one clock, in order, <see cref="JoinGapSeconds"/> apart: each part's head
+        /// samples and ankle poses moved by the same time, its ankle poses cut to its head stream's span and moved
+        /// sideways (not up: one floor) to go on from where the last part's ankles stopped. Both ankle streams in every part
+        /// or in none.
+        /// </summary>
+        public static CalibrationSession Join(IReadOnlyList<CalibrationSession> parts)
+        {
+            if (parts == null || parts.Count == 0) throw new ArgumentException("Nothing to join: no calibration walks.");
+            if (parts.Count == 1) return parts[0];
+            bool ankles = parts[0].HasFootReferences;
+            foreach (var p in parts)
+                if (p.HasFootReferences != ankles) throw new ArgumentException($"{p.Head.Name}: some walks to join have ankle streams and some do not.");
+            var head = new List<RecordedSample>();
+            var left = ankles ? new List<PoseSample>() : null;
+            var right = ankles ? new List<PoseSample>() : null;
+            double margin = JoinGapSeconds / 4;
+            foreach (var p in parts)
+            {
+                if (p.Head.Samples.Count < 2) throw new ArgumentException($"{p.Head.Name}: a walk to join holds {p.Head.Samples.Count} head samples.");
+                double first = p.Head.Samples[0].Imu.Time, last = p.Head.Samples[p.Head.Samples.Count - 1].Imu.Time;
+                double shift = head.Count == 0 ? 0 : head[head.Count - 1].Imu.Time + JoinGapSeconds - first;
+                foreach (var s in p.Head.Samples)
+                {
+                    var imu = new ImuSample(s.Imu.Time + shift, s.Imu.X, s.Imu.Y, s.Imu.Z);
+                    head.Add(s.HasTruth ? new RecordedSample(imu, s.Left, s.Right, s.Line) : new RecordedSample(imu, s.Line));
+                }
+                if (!ankles) continue;
+                int from = 0;
+                while (from < p.LeftAnkle.Count - 1 && p.LeftAnkle[from].Time < first - margin) from++;
+                double dx = 0, dz = 0;
+                if (left.Count > 0)
+                {
+                    // Where both ankles stood (middle) at the end of the last part, and at the start of this one.
+                    PoseSample l0 = left[left.Count - 1], r0 = right[right.Count - 1], l1 = p.LeftAnkle[from], r1 = p.RightAnkle[Math.Min(from, p.RightAnkle.Count - 1)];
+                    dx = 0.5 * (l0.Px + r0.Px - l1.Px - r1.Px);
+                    dz = 0.5 * (l0.Pz + r0.Pz - l1.Pz - r1.Pz);
+                }
+                AddPoses(p.LeftAnkle, left);
+                AddPoses(p.RightAnkle, right);
+
+                void AddPoses(IReadOnlyList<PoseSample> poses, List<PoseSample> to)
+                {
+                    foreach (var a in poses)
+                        if (a.Time >= first - margin && a.Time <= last + margin)
+                            to.Add(new PoseSample(a.Time + shift, a.Px + dx, a.Py, a.Pz + dz, a.Qx, a.Qy, a.Qz, a.Qw));
+                }
+            }
+            var joined = new Recording(parts[0].Head.Name + (parts.Count > 1 ? $"+{parts.Count - 1}" : ""), head);
+            foreach (var kv in parts[0].Head.Metadata) joined.Metadata[kv.Key] = kv.Value;
+            return new CalibrationSession(joined, left, right);
         }
 
         static List<PoseSample> Poses(PoseRecording r)

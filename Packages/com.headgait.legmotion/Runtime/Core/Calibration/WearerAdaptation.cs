@@ -4,55 +4,85 @@ using HeadGait.Training;
 
 namespace HeadGait.Calibration
 {
-    /// <summary>
-    /// Fits the classifiers to one wearer from a calibration walk, in C# and in seconds: COR's step templates (the wearer's
-    /// own mean step added in front of the trained ones, then the correlation threshold, contact lags and clock lead
-    /// recalibrated on the walk), THR's floor, lag, sideways profile and clock lead (recalibrated starting from the trained
-    /// settings), how far the walking gates must open to pass the wearer's walking, and the learned models' input gain. The
-    /// walk is labelled either from two ankle trackers (<see cref="FootContactLabeller"/>) or by the shipped COR itself
-    /// (<see cref="SelfLabel"/>). Bounded so that it cannot make standing walk: a gate opens by at most
-    /// <see cref="WearerProfile.MaxGateShift"/>, COR's threshold drops by at most <see cref="MaxThresholdDrop"/>, THR's floor
-    /// to no less than <see cref="MinFloorShare"/> of the trained one.
-    /// </summary>
     /// <summary>Which parts of the classifiers a calibration walk refits (the defaults are the measured choice; see <see cref="WearerAdaptation"/>).</summary>
     public sealed class AdaptationSettings
     {
         /// <summary>Add the wearer's own mean step in front of COR's trained templates.</summary>
         public bool CorTemplate = true;
-        /// <summary>Recalibrate COR's correlation threshold and contact lags on the walk (else the trained ones stay): off, it cost more than it gave (see <see cref="WearerAdaptation"/>).</summary>
+        /// <summary>Recalibrate COR's correlation threshold and contact lags on the walk whatever its length (else only from <see cref="CorThresholdSteps"/>).</summary>
         public bool CorThreshold;
-        /// <summary>Recalibrate COR's clock lead on the walk: off, as <see cref="CorThreshold"/>.</summary>
+        /// <summary>
+        /// Steps from which a walk recalibrates COR's correlation threshold, contact lags and clock lead: a minute's walk
+        /// holds about a hundred; on one clip of 8-13 steps they overfit (a style's other clips up to 32 points worse).
+        /// </summary>
+        public int CorThresholdSteps = 60;
+        /// <summary>Recalibrate COR's clock lead on the walk whatever its length (else only from <see cref="CorThresholdSteps"/>, as the threshold).</summary>
         public bool CorLead;
         /// <summary>Recalibrate THR's floor, lag and sideways profile on the walk, then its clock lead.</summary>
         public bool Threshold = true;
-        /// <summary>Open THR's and COR's walking gates as far as the wearer's walking needs (bounded): off, it changed nothing on the real walkers' held-out recordings.</summary>
+        /// <summary>
+        /// Open THR's and COR's walking gates as far as the wearer's walking needs (bounded): off. With ankle trackers it
+        /// helped one style and cost another; self-supervised on real glasses it showed standing, head movement and picking up
+        /// as walking more, and the wearer's own stillness, which could bound it, is not recorded at calibration.
+        /// </summary>
         public bool DetectorGates;
-        /// <summary>Open the learned models' gate as far as the wearer's walking needs (bounded): off, it let a generated walker's head movement show as walking.</summary>
-        public bool LearnedGate;
+        /// <summary>
+        /// Open the learned models' gate as far as the wearer's walking needs (bounded; ankle trackers only, as their labels
+        /// say where the wearer walked; kept only where it pays on the walk, with the input gain).
+        /// </summary>
+        public bool LearnedGate = true;
+        /// <summary>Most a calibration opens a walking gate (log-odds; at most <see cref="WearerProfile.MaxGateShift"/>).</summary>
+        public double MaxGateShift = WearerProfile.MaxGateShift;
         /// <summary>
         /// Keep each refitted part only where it scores the calibration walk itself better than the trained one by at least
         /// this much misclassification (0.01 = a point); NaN keeps every part.
         /// </summary>
         public double AcceptMargin = 0.005;
         /// <summary>
-        /// The settings for a walk labelled from ankle trackers, or self-supervised: there THR is not refitted, as its
-        /// labels come from COR's own contacts and a refitted THR followed them into worse contact timing.
+        /// The settings for a walk labelled from ankle trackers, or self-supervised: there THR is not refitted, as the labels
+        /// come from COR's own contacts and a refitted THR followed them into worse contact timing (a minute's walk: pooled
+        /// 23.5 to 23.9 %), and the learned gate stays, as the sure stretches are where the wearer's steps were clearest.
         /// </summary>
-        public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised ? new AdaptationSettings { Threshold = false } : new AdaptationSettings();
+        public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised
+            ? new AdaptationSettings { Threshold = false, LearnedGate = false }
+            : new AdaptationSettings();
 
         /// <summary>Steps at which THR's refitted values and the trained ones weigh the same (shrinks a short walk's fit towards training).</summary>
         public double ThresholdPriorSteps = 20;
         /// <summary>Scale the learned models' input towards the training walkers' bounce.</summary>
         public bool LearnedGain = true;
+        /// <summary>
+        /// Self-supervised: read COR's contacts with its walking gate open (<see cref="WearerAdaptation.SelfLabel"/>). The wearer
+        /// was asked to walk, so the gate has nothing to decide, and a gate that refuses a calm walker's steps leaves nothing to
+        /// fit on (nor anything to tell how far that wearer's gate must open); the steady rhythm alone picks the sure stretches.
+        /// </summary>
+        public bool LabelWithGateOpen = true;
+        /// <summary>Self-supervised: a step COR missed in a steady rhythm (a gap of two steps) is filled in (<see cref="WearerAdaptation.SelfLabel"/>).</summary>
+        public bool FillMissedSteps = true;
     }
 
+    /// <summary>
+    /// Fits the classifiers to one wearer from a calibration walk, in C# and in seconds: COR's step templates (the wearer's
+    /// own mean step added in front of the trained ones; from <see cref="AdaptationSettings.CorThresholdSteps"/> steps also
+    /// the correlation threshold, contact lags and clock lead recalibrated on the walk, whichever scores it best), THR's
+    /// floor, lag, sideways profile and clock lead (recalibrated starting from the trained settings), how far the learned
+    /// models' walking gate must open to pass the wearer's walking, and their input gain. The walk is labelled either from
+    /// two ankle trackers (<see cref="FootContactLabeller"/>) or by the shipped COR itself (<see cref="SelfLabel"/>).
+    /// Bounded so that it cannot make standing walk: a gate opens by at most <see cref="WearerProfile.MaxGateShift"/>, COR's
+    /// threshold drops by at most <see cref="MaxThresholdDrop"/> (none), THR's floor to no less than
+    /// <see cref="MinFloorShare"/> of the trained one.
+    /// </summary>
     public static class WearerAdaptation
     {
         /// <summary>Steps a calibration walk must hold.</summary>
         public const int MinSteps = 6;
 
-        /// <summary>Largest drop of COR's correlation threshold below the trained one.</summary>
-        public const double MaxThresholdDrop = 0.05;
+        /// <summary>
+        /// Largest drop of COR's correlation threshold below the trained one: none. A minute's walk that pulled it down
+        /// (*active*, 0.70 to 0.65) showed the style's gestures as walking more (2.1 to 3.1 %) and misclassified more; the
+        /// walks that raised it gained (*feminine*, 0.78 to 0.79: 22.9 to 17.9 %).
+        /// </summary>
+        public const double MaxThresholdDrop = 0;
 
         /// <summary>THR's floor stays at least this share of the trained floor.</summary>
         public const double MinFloorShare = 0.6;
@@ -77,32 +107,42 @@ namespace HeadGait.Calibration
             var baseThr = models.Threshold;
             var map = baseCor.PhaseMap;
 
-            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass)) : baseCor.Gate;
+            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseCor.Gate;
             var templates = new List<StepTemplate>();
             if (a.CorTemplate) templates.AddRange(CorrelationTemplate.Train(training, map, corGate, 1).Templates);
             foreach (var t in baseCor.Templates)
                 if (templates.Count < 16) templates.Add(t);
             var cor = baseCor.With(templates: templates, gate: corGate);
-            if (a.CorThreshold)
+            // Candidates, from the least refitted: the wearer's step alone (its lag the trained templates' median), then
+            // with the threshold, lags and clock lead recalibrated on the walk (a long walk's, or where asked).
+            var corCandidates = new List<CorrelationTemplate>();
+            if (a.CorTemplate)
             {
-                cor = CorrelationClassifier.Calibrate(cor, training);
-                cor = cor.With(minCorrelation: Math.Max(cor.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
-            }
-            else if (a.CorTemplate)
-            {
-                // The wearer's template takes the trained templates' median lag.
                 var lags = new List<double>();
                 foreach (var t in baseCor.Templates) lags.Add(t.ContactLag);
-                templates[0] = templates[0].WithLag(GaitMetrics.Median(lags));
-                cor = cor.With(templates: templates);
+                var own = new List<StepTemplate>(templates);
+                own[0] = own[0].WithLag(GaitMetrics.Median(lags));
+                corCandidates.Add(cor.With(templates: own));
             }
-            if (a.CorLead)
+            bool refitThreshold = a.CorThreshold || steps >= a.CorThresholdSteps, refitLead = a.CorLead || steps >= a.CorThresholdSteps;
+            if (refitThreshold || refitLead)
             {
-                var fitted = cor;
-                cor = cor.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
+                var refit = a.CorTemplate ? cor : baseCor.With(gate: corGate);
+                if (refitThreshold)
+                {
+                    refit = CorrelationClassifier.Calibrate(refit, training);
+                    refit = refit.With(minCorrelation: Math.Max(refit.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
+                }
+                else if (a.CorTemplate) refit = corCandidates[0];
+                if (refitLead)
+                {
+                    var fitted = refit;
+                    refit = refit.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
+                }
+                corCandidates.Add(refit);
             }
 
-            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass)) : baseThr.Gate;
+            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseThr.Gate;
             var thr = baseThr.Clone();
             thr.Gate = thrGate;
             if (a.Threshold)
@@ -118,7 +158,23 @@ namespace HeadGait.Calibration
             var shippedCor = baseCor.With(gate: corGate);
             var shippedThr = baseThr.Clone();
             shippedThr.Gate = thrGate;
-            if (!Pays(() => new CorrelationClassifier(cor), () => new CorrelationClassifier(shippedCor), walk, a.AcceptMargin)) cor = shippedCor;
+            // COR: the candidate that scores the walk best, where it beats the trained COR by the margin (NaN: the most refitted).
+            cor = shippedCor;
+            if (double.IsNaN(a.AcceptMargin))
+            {
+                if (corCandidates.Count > 0) cor = corCandidates[corCandidates.Count - 1];
+            }
+            else
+            {
+                double best = Misclassification(() => new CorrelationClassifier(shippedCor), walk) - a.AcceptMargin;
+                foreach (var candidate in corCandidates)
+                {
+                    double score = Misclassification(() => new CorrelationClassifier(candidate), walk);
+                    if (score > best) continue;
+                    best = score;
+                    cor = candidate;
+                }
+            }
             if (!Pays(() => new ThresholdClassifier(thr), () => new ThresholdClassifier(shippedThr), walk, a.AcceptMargin)) thr = shippedThr;
 
             var learnedGate = LearnedGate(models);
@@ -130,7 +186,7 @@ namespace HeadGait.Calibration
                 BaseModels = WearerProfile.Fingerprint(models),
                 Threshold = thr,
                 Correlation = cor,
-                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass),
+                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass, a.MaxGateShift),
                 LearnedGain = a.LearnedGain ? LearnedGain(baseCor.LeadReferenceBounce, walk) : 1,
             };
             // The learned models' scaling too only where it pays on the walk (the SVM's and the BLSTM's scores together).
@@ -155,15 +211,14 @@ namespace HeadGait.Calibration
 
         /// <summary>Whether <paramref name="adapted"/> misclassifies the walk less than <paramref name="shipped"/> by at least <paramref name="margin"/> (NaN: always).</summary>
         static bool Pays(Func<IGaitClassifier> adapted, Func<IGaitClassifier> shipped, IReadOnlyList<Recording> walk, double margin)
+            => double.IsNaN(margin) || Misclassification(adapted, walk) <= Misclassification(shipped, walk) - margin;
+
+        /// <summary>Pooled misclassification of the walk by fresh classifiers from <paramref name="make"/>.</summary>
+        static double Misclassification(Func<IGaitClassifier> make, IReadOnlyList<Recording> walk)
         {
-            if (double.IsNaN(margin)) return true;
-            double Score(Func<IGaitClassifier> make)
-            {
-                var parts = new List<GaitMetrics>();
-                foreach (var r in walk) parts.Add(ReplayEvaluator.Run(r, make()).ClassifierMetrics);
-                return GaitMetrics.Pool(parts).MisclassificationRate;
-            }
-            return Score(adapted) <= Score(shipped) - margin;
+            var parts = new List<GaitMetrics>();
+            foreach (var r in walk) parts.Add(ReplayEvaluator.Run(r, make()).ClassifierMetrics);
+            return GaitMetrics.Pool(parts).MisclassificationRate;
         }
 
         /// <summary>THR's refitted floor, lag, sideways profile and clock lead moved from the trained ones by <paramref name="weight"/> of the way.</summary>
@@ -196,7 +251,7 @@ namespace HeadGait.Calibration
         /// Log-odds to add to <paramref name="gate"/> so that <paramref name="pass"/> of the walk's walking windows pass, as
         /// training set it for the training walkers (0 when they already do; at most <see cref="WearerProfile.MaxGateShift"/>).
         /// </summary>
-        public static double GateShift(WalkingGate gate, IReadOnlyList<Recording> walk, double pass)
+        public static double GateShift(WalkingGate gate, IReadOnlyList<Recording> walk, double pass, double most = WearerProfile.MaxGateShift)
         {
             if (gate == null) return 0;
             var scores = new List<double>();
@@ -213,7 +268,7 @@ namespace HeadGait.Calibration
             if (scores.Count < 50) return 0;
             scores.Sort();
             double q = scores[(int)Math.Floor((1 - pass) * (scores.Count - 1))];
-            return Math.Max(0, Math.Min(WearerProfile.MaxGateShift, -q));
+            return Math.Max(0, Math.Min(Math.Min(most, WearerProfile.MaxGateShift), -q));
         }
 
         /// <summary>
@@ -247,19 +302,22 @@ namespace HeadGait.Calibration
         public const double RhythmTolerance = 0.25;
 
         /// <summary>
-        /// Self-supervised labels (no foot references): the walk replayed through the shipped COR; every stretch of at least
+        /// Self-supervised labels (no foot references): the walk replayed through the shipped COR (its walking gate open
+        /// where <paramref name="gateOpen"/>; a step it missed in a steady rhythm filled in where <paramref name="fillMissed"/>,
+        /// see <see cref="WithMissedSteps"/>); every stretch of at least
         /// <see cref="MinSureContacts"/> contacts in a clear rhythm (each step within <see cref="RhythmTolerance"/> of the
         /// stretch's median, 0.3 to 1 s) becomes a labelled walking recording, its feet alternating from the side COR
         /// named most often and each foot's phases spread over its stride by the trained phase map. Empty when none is sure.
         /// </summary>
-        public static List<Recording> SelfLabel(GaitModels models, Recording walk)
+        public static List<Recording> SelfLabel(GaitModels models, Recording walk, bool gateOpen = true, bool fillMissed = true)
         {
             if (models?.Correlation == null) throw new InvalidOperationException("Self-supervised calibration needs the trained COR template.");
-            var cor = new CorrelationClassifier(models.Correlation);
+            var cor = new CorrelationClassifier(gateOpen ? models.Correlation.With(gate: WalkingGate.Open) : models.Correlation);
             var contacts = new List<(double time, double evidence)>();
             cor.ContactDetected += (t, e, r, k) => contacts.Add((t, e));
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
             foreach (var s in walk.Samples) pre.Push(s.Imu, w => cor.Classify(w));
+            if (fillMissed) contacts = WithMissedSteps(contacts);
             var stretches = new List<Recording>();
             int start = 0;
             for (int i = 1; i <= contacts.Count; i++)
@@ -271,6 +329,34 @@ namespace HeadGait.Calibration
                 start = i;
             }
             return stretches;
+        }
+
+        /// <summary>
+        /// The contacts with one contact put midway into every gap of two of the walk's steps (its median step, within
+        /// <see cref="RhythmTolerance"/>): a calm wearer's steps that COR missed, so that the stretch goes on through them
+        /// (and the wearer's own template learns them). The filled contact carries no side evidence.
+        /// </summary>
+        static List<(double time, double evidence)> WithMissedSteps(List<(double time, double evidence)> contacts)
+        {
+            var steps = new List<double>();
+            for (int i = 1; i < contacts.Count; i++)
+            {
+                double gap = contacts[i].time - contacts[i - 1].time;
+                if (gap >= 0.3 && gap <= 1.0) steps.Add(gap);
+            }
+            if (steps.Count < MinSureContacts) return contacts;
+            double step = GaitMetrics.Median(steps);
+            var filled = new List<(double time, double evidence)>(contacts.Count);
+            for (int i = 0; i < contacts.Count; i++)
+            {
+                if (i > 0)
+                {
+                    double gap = contacts[i].time - contacts[i - 1].time;
+                    if (Math.Abs(gap - 2 * step) <= 2 * RhythmTolerance * step && gap / 2 <= 1.0) filled.Add((contacts[i - 1].time + gap / 2, 0));
+                }
+                filled.Add(contacts[i]);
+            }
+            return filled;
         }
 
         static void AddSure(Recording walk, PhaseMap map, List<(double time, double evidence)> contacts, int from, int to, List<Recording> stretches)
