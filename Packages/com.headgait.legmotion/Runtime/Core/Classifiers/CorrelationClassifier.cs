@@ -271,8 +271,8 @@ namespace HeadGait
             int valid = Math.Min(window.Count, SearchLength);
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
-            bool moving = template.Gate.Passes(window);
             clock.FollowRhythm(window, template.Gate.LevelTolerance);
+            bool moving = template.Gate.Passes(window) && !clock.StartBlocked(now) || clock.HeldByRhythm(now);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             if (settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows))
