@@ -257,9 +257,14 @@ namespace HeadGait
         /// </summary>
         public bool StartBlocked(double now) => settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange && !IsWalking(now);
 
+        /// <summary>Most spread (standard deviation, m/s^2) of SMV over a half second read for the head's tilt (<see cref="TiltChange"/>).</summary>
+        public const double MaxTiltSmvSpread = 5;
+
         /// <summary>
         /// Degrees between the most and the least tilted gravity direction (0.5-s means of the head-frame acceleration
-        /// against its vertical axis, every 0.1 s) over the window's newest <paramref name="seconds"/>.
+        /// against its vertical axis, every 0.1 s) over the window's newest <paramref name="seconds"/>. A half second whose
+        /// SMV spreads more than <see cref="MaxTiltSmvSpread"/> holds no steady direction of gravity (knocks, a glitching
+        /// sensor) and is left out: a hostile stream's junk otherwise refused the start of the clean walk after it for 2 s.
         /// </summary>
         public static double TiltChange(SignalWindow w, double seconds)
         {
@@ -269,13 +274,17 @@ namespace HeadGait
             double least = double.PositiveInfinity, most = double.NegativeInfinity;
             for (int end = w.Length; end - mean >= w.Length - span; end -= hop)
             {
-                double x = 0, y = 0, z = 0;
+                double x = 0, y = 0, z = 0, smv = 0, smv2 = 0;
                 for (int i = end - mean; i < end; i++)
                 {
                     x += w.Forward[i];
                     y += w.Lateral[i];
                     z += w.Vertical[i];
+                    smv += w.Smv[i];
+                    smv2 += w.Smv[i] * w.Smv[i];
                 }
+                smv /= mean;
+                if (smv2 / mean - smv * smv > MaxTiltSmvSpread * MaxTiltSmvSpread) continue;
                 double norm = Math.Sqrt(x * x + y * y + z * z);
                 if (norm <= 1e-9) continue;
                 double tilt = Math.Acos(Math.Max(-1, Math.Min(1, z / norm))) * 180 / Math.PI;
