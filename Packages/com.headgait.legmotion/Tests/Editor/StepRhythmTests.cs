@@ -199,5 +199,95 @@ namespace HeadGait.Tests
             foreach (var s in DoubleBumpWalk(step, seconds).Samples) pre.Push(s.Imu, w => thr.Classify(w));
             Assert.That(contacts, Is.InRange(seconds / step - 4, seconds / step + 2));
         }
+
+        /// <summary>
+        /// A slow walk of <paramref name="step"/>-s steps whose every third step lands too softly for THR's threshold (a calm
+        /// walker: the head's rhythm still shows the step, SMV repeating per step and the head swaying to the other side).
+        /// </summary>
+        static Recording SlowWalkWithSoftSteps(double step, double seconds)
+        {
+            var rows = new List<RecordedSample>();
+            for (int i = 0; i < seconds * 100; i++)
+            {
+                double t = i * 0.01;
+                int k = (int)Math.Floor(t / step);
+                double since = t - k * step;
+                double heel = (k % 3 == 2 ? 0.3 : 2.5) * Math.Exp(-since * since / (2 * 0.04 * 0.04));
+                double up = 9.80665 + heel + 0.5 * Math.Cos(2 * Math.PI * t / step);
+                rows.Add(new RecordedSample(new ImuSample(t, 0.5 * Math.Cos(2 * Math.PI * t / step), 0.8 * Math.Sin(Math.PI * t / step), up)));
+            }
+            return new Recording("slow walk, soft steps", rows);
+        }
+
+        [Test]
+        public void ASlowWalkerWhoseSoftStepsGoUndetectedKeepsWalkingWhileTheRhythmShowsTheSteps()
+        {
+            // Every third step is missed: 1.8 s between contacts, more than the 1.5 step periods after which the clock alone
+            // reports standing. The head's rhythm still shows the steps, so the walk goes on and the missed step is walked.
+            const double step = 0.9, seconds = 30;
+            var thr = new ThresholdClassifier(new ThresholdSettings { Gate = WalkingGate.Open.WithStepRhythm() });
+            var contacts = new List<(double Time, Foot Foot)>();
+            thr.ContactDetected += (t, e) => contacts.Add((t, thr.Clock.LastFoot));
+            int windows = 0, walking = 0;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+            foreach (var s in SlowWalkWithSoftSteps(step, seconds).Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    var p = thr.Classify(w);
+                    if (w.EndTime < 4) return;
+                    windows++;
+                    if (p.IsWalking) walking++;
+                });
+            Assert.That(contacts.Count, Is.InRange(seconds / step * 2 / 3 - 3, seconds / step * 2 / 3 + 1), "the soft steps are not detected");
+            Assert.That((double)walking / windows, Is.GreaterThan(0.98), "walking throughout");
+            // Across a missed step the same foot lands again: steps one period apart alternate, two periods apart do not.
+            int right = 0, judged = 0;
+            for (int i = 1; i < contacts.Count; i++)
+            {
+                if (contacts[i].Time < 4) continue;
+                bool twoSteps = contacts[i].Time - contacts[i - 1].Time > 1.5 * step;
+                judged++;
+                if ((contacts[i].Foot == contacts[i - 1].Foot) == twoSteps) right++;
+            }
+            Assert.That(right, Is.EqualTo(judged), "the feet follow the steps");
+        }
+
+        /// <summary>
+        /// Standing, then bending down to the floor and straightening again <paramref name="times"/> times: the head pitches
+        /// forward by 70 degrees over 0.8 s, stays down a second and comes up over 0.6 s, landing with a jolt of 3 m/s^2 that
+        /// bumps SMV like a heel strike.
+        /// </summary>
+        static Recording PickingThingsUp(int times)
+        {
+            var rows = new List<RecordedSample>();
+            const double g = 9.80665, cycle = 6;
+            for (int i = 0; i < (2 + times * cycle) * 100; i++)
+            {
+                double t = i * 0.01, c = (t - 2) % cycle;
+                double pitch = 0;
+                if (t >= 2)
+                {
+                    if (c < 0.8) pitch = c / 0.8;
+                    else if (c < 1.8) pitch = 1;
+                    else if (c < 2.4) pitch = 1 - (c - 1.8) / 0.6;
+                }
+                double angle = pitch * 70 * Math.PI / 180;
+                double jolt = t >= 2 && c >= 2.4 ? 3 * Math.Exp(-(c - 2.45) * (c - 2.45) / (2 * 0.04 * 0.04)) : 0;
+                double a = g + jolt;
+                rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
+            }
+            return new Recording("picking things up", rows);
+        }
+
+        [Test]
+        public void BendingDownToPickSomethingUpDoesNotStartAWalk()
+        {
+            // With a gate that passes everything, THR takes the jolt of straightening up for a first step and walks.
+            var thr = new ThresholdClassifier(new ThresholdSettings { Gate = WalkingGate.Open });
+            int walking = 0;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+            foreach (var s in PickingThingsUp(5).Samples) pre.Push(s.Imu, w => { if (thr.Classify(w).IsWalking) walking++; });
+            Assert.That(walking, Is.EqualTo(0));
+        }
     }
 }

@@ -105,9 +105,10 @@ namespace HeadGait
         /// One contact starts walking; on the pose path the clock looks 10 ms further ahead
         /// (<see cref="StepClockSettings.PoseFitDelay"/>). Leave-one-style-out on the pose recordings, 0 / 5 / 10 / 15 / 20 /
         /// 25 ms: 25.5 / 24.9 / 24.7 / 24.9 / 25.3 / 26.2 % (the same order at 72, 90 and 120 Hz; step recall 98.3 %
-        /// throughout); file CV at 10 ms 22.3 to 21.2 %.
+        /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
+        /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75 };
     }
 
     /// <summary>
@@ -271,8 +272,8 @@ namespace HeadGait
             int valid = Math.Min(window.Count, SearchLength);
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
-            bool moving = template.Gate.Passes(window);
             clock.FollowRhythm(window, template.Gate.LevelTolerance);
+            bool moving = template.Gate.Passes(window) && !clock.StartBlocked(now) || clock.HeldByRhythm(now);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             if (settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows))

@@ -220,8 +220,8 @@ namespace HeadGait
                     inStep = false;
                 }
             }
-            bool moving = settings.Gate.Passes(window);
             clock.FollowRhythm(window, settings.Gate.LevelTolerance);
+            bool moving = settings.Gate.Passes(window) && !clock.StartBlocked(now) || clock.HeldByRhythm(now);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks
