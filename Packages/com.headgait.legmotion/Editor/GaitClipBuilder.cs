@@ -18,13 +18,7 @@ namespace HeadGait.Editor
         {
             var clips = new GaitClips(map);
             var written = new Dictionary<LocomotionState, Motion>();
-            foreach (var state in GaitClips.All)
-            {
-                var clip = Build(clips, state);
-                AssetDatabase.CreateAsset(clip, folder.TrimEnd('/') + "/" + GaitClips.Name(state) + ".anim");
-                written[state] = clip;
-            }
-            AssetDatabase.SaveAssets();
+            foreach (var pair in ClipAssets.Write(folder, state => Build(clips, state))) written[pair.Key] = pair.Value;
             return written;
         }
 
@@ -37,16 +31,10 @@ namespace HeadGait.Editor
             {
                 for (int component = 0; component < 3; component++)
                 {
-                    bool constant = channel.IsConstant(component);
-                    var keys = new List<Keyframe>();
-                    for (int k = 0; k < curves.Keys.Count; k++)
-                    {
-                        if (constant && k > 0 && k < curves.Keys.Count - 1) continue; // a constant needs its ends only
-                        keys.Add(new Keyframe((float)curves.Time(k), (float)channel.Values[k][component],
-                            (float)channel.InSlopes[k][component], (float)channel.OutSlopes[k][component]));
-                    }
+                    var curve = ClipAssets.Curve(curves.Keys.Count, channel.IsConstant(component), k => new Keyframe((float)curves.Time(k),
+                        (float)channel.Values[k][component], (float)channel.InSlopes[k][component], (float)channel.OutSlopes[k][component]));
                     var binding = EditorCurveBinding.FloatCurve(channel.Path, typeof(Transform), channel.Attribute(component));
-                    AnimationUtility.SetEditorCurve(clip, binding, new AnimationCurve(keys.ToArray()));
+                    AnimationUtility.SetEditorCurve(clip, binding, curve);
                 }
             }
             // One stride long; Walking and Standing loop. The mannequin is a Generic rig whose hips carry their own height:

@@ -18,15 +18,7 @@ namespace HeadGait.Editor
         public static Dictionary<LocomotionState, AnimationClip> Create(string folder, PhaseMap map)
         {
             var clips = new GaitClips(map);
-            var written = new Dictionary<LocomotionState, AnimationClip>();
-            foreach (var state in GaitClips.All)
-            {
-                var clip = Build(clips, state);
-                AssetDatabase.CreateAsset(clip, folder.TrimEnd('/') + "/" + GaitClips.Name(state) + ".anim");
-                written[state] = clip;
-            }
-            AssetDatabase.SaveAssets();
-            return written;
+            return ClipAssets.Write(folder, state => Build(clips, state));
         }
 
         /// <summary>One clip: a float curve on the Animator (empty path) per muscle and root curve, timed as the package's .anim.</summary>
@@ -36,14 +28,9 @@ namespace HeadGait.Editor
             var clip = new AnimationClip { name = GaitClips.Name(state), frameRate = GaitClipCurves.SampleRate };
             foreach (var curve in curves.Curves)
             {
-                bool constant = curve.IsConstant;
-                var keys = new List<Keyframe>();
-                for (int k = 0; k < curves.Keys.Count; k++)
-                {
-                    if (constant && k > 0 && k < curves.Keys.Count - 1) continue; // a constant needs its ends only
-                    keys.Add(new Keyframe((float)curves.Time(k), (float)curve.Values[k], (float)curve.InSlopes[k], (float)curve.OutSlopes[k]));
-                }
-                AnimationUtility.SetEditorCurve(clip, EditorCurveBinding.FloatCurve("", typeof(Animator), curve.Attribute), new AnimationCurve(keys.ToArray()));
+                var animated = ClipAssets.Curve(curves.Keys.Count, curve.IsConstant,
+                    k => new Keyframe((float)curves.Time(k), (float)curve.Values[k], (float)curve.InSlopes[k], (float)curve.OutSlopes[k]));
+                AnimationUtility.SetEditorCurve(clip, EditorCurveBinding.FloatCurve("", typeof(Animator), curve.Attribute), animated);
             }
             // One stride long; Walking and Standing loop; the body's motion is baked into the pose, so the avatar walks on
             // the spot as the mannequin does.
