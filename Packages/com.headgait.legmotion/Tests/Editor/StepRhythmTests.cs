@@ -289,5 +289,68 @@ namespace HeadGait.Tests
             foreach (var s in PickingThingsUp(5).Samples) pre.Push(s.Imu, w => { if (thr.Classify(w).IsWalking) walking++; });
             Assert.That(walking, Is.EqualTo(0));
         }
+
+        /// <summary>
+        /// A model the bend fools: from the moment the head starts coming up (1.8 s into each pick-up) until a second after
+        /// the jolt of straightening, it names the stride's segments in order at a 1.1-s stride, as if walking; standing
+        /// otherwise. <see cref="Time"/> is the newest sample's time of the window it scores next.
+        /// </summary>
+        sealed class FooledByTheBend : ILearnedEvaluator
+        {
+            readonly LearnedClassifier classifier;
+            readonly bool votes;
+            public double Time;
+
+            public FooledByTheBend(LearnedClassifier classifier, bool votes)
+            {
+                this.classifier = classifier;
+                this.votes = votes;
+            }
+
+            public void Evaluate(double[] features, int windows, double[] scores)
+            {
+                var segments = classifier.Segments;
+                int classes = segments.ClassCount;
+                double c = (Time - 2) % 6;
+                int shown = Time >= 2 && c >= 1.8 && c < 3.4 ? (int)((c - 1.8) / 1.1 * segments.Count) % segments.Count : segments.StandingClass;
+                for (int k = 0; k < classes; k++) scores[k] = votes ? (k == shown ? 10 : 0) : (k == shown ? 0.999 : 0.001 / (classes - 1));
+            }
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void BendingDownToPickSomethingUpStartsNoWalkOfTheLearnedClassifiers(bool svm)
+        {
+            // Without the walking gate the model's word alone would walk through each straightening up.
+            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            LearnedClassifier learned = svm ? new SvmClassifier(models.Svm) : new BlstmClassifier(models.Blstm);
+            learned.Gate = null;
+            var fooled = new FooledByTheBend(learned, svm);
+            learned.Evaluator = fooled;
+            int walking = 0, windows = 0;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(learned.WindowLength, StepRhythm.HistorySamples) });
+            foreach (var s in PickingThingsUp(5).Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    fooled.Time = w.EndTime;
+                    windows++;
+                    if (learned.Classify(w).IsWalking) walking++;
+                });
+            Assert.That(windows, Is.GreaterThan(2500));
+            Assert.That(walking, Is.EqualTo(0));
+            // The same model, the head upright: its fooled second walks.
+            var upright = new FooledByTheBend(learned, svm);
+            learned.Reset();
+            learned.Evaluator = upright;
+            walking = 0;
+            pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(learned.WindowLength, StepRhythm.HistorySamples) });
+            for (int i = 0; i < 1400; i++)
+                pre.Push(new ImuSample(i * 0.01, 0, 0, 9.80665), w =>
+                {
+                    upright.Time = w.EndTime;
+                    if (learned.Classify(w).IsWalking) walking++;
+                });
+            Assert.That(walking, Is.GreaterThan(100), "the model's word walks where the head does not bend");
+        }
     }
 }
