@@ -34,6 +34,7 @@ namespace HeadGait
         double lastContactTime = double.NaN;
         double stepPeriod;
         int refusedRun;
+        double walkStartTime = double.NaN;
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -159,6 +160,7 @@ namespace HeadGait
             lastContactTime = double.NaN;
             stepPeriod = DefaultStepPeriod;
             refusedRun = 0;
+            walkStartTime = double.NaN;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -234,7 +236,7 @@ namespace HeadGait
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange)
         {
             ToProbabilities(scores, probabilities);
-            bool bending = Bending(tiltChange);
+            bool bending = Bending(tiltChange, now);
             if (bending) gate = GateVerdict.Refuses;
             refusedRun = gate == GateVerdict.Refuses ? refusedRun + 1 : 0;
             if (gate == GateVerdict.Refuses)
@@ -281,6 +283,7 @@ namespace HeadGait
                 return GaitPrediction.Standing(now, p[best]);
             }
             TrackContacts(best, now);
+            if (!WasWalking) walkStartTime = now;
             lastClass = best;
             // Within the segment, lean towards whichever neighbour scores higher.
             int n = Segments.Count;
@@ -292,12 +295,14 @@ namespace HeadGait
 
         /// <summary>
         /// Whether the head's tilt moved too much for walking: more than <see cref="PhaseFilterSettings.MaxStartTiltChange"/>
-        /// to start one, more than <see cref="PhaseFilterSettings.MaxWalkingTiltChange"/> to go on with one.
+        /// to start one or go on with one younger than <see cref="HeadTilt.YoungWalk"/>, more than
+        /// <see cref="PhaseFilterSettings.MaxWalkingTiltChange"/> to go on with an older one.
         /// </summary>
-        bool Bending(double tiltChange)
+        bool Bending(double tiltChange, double now)
         {
             if (filter == null) return false;
-            double limit = WasWalking ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
+            bool young = WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
+            double limit = WasWalking && !young ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
             return limit > 0 && tiltChange > limit;
         }
 

@@ -73,7 +73,10 @@ namespace HeadGait
         /// </summary>
         public double MaxStartTiltChange = HeadTilt.DefaultMaxStartChange;
 
-        /// <summary>A walk in progress stops outright (no refusal ridden out) when the head's tilt moves more than this (degrees). 0 turns it off.</summary>
+        /// <summary>
+        /// A walk in progress stops outright (no refusal ridden out) when the head's tilt moves more than this (degrees), or
+        /// more than <see cref="MaxStartTiltChange"/> within <see cref="HeadTilt.YoungWalk"/> of its start. 0 turns it off.
+        /// </summary>
         public double MaxWalkingTiltChange = HeadTilt.DefaultMaxWalkingChange;
 
         /// <summary>Weight of the model's standing probability in a window the gate is sure of (see <see cref="SureWalkingLogOdds"/>).</summary>
