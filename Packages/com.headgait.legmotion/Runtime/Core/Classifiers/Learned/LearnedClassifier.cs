@@ -154,7 +154,6 @@ namespace HeadGait
         public virtual void Reset()
         {
             filter?.Reset();
-            tilt.Reset();
             lastTime = double.NaN;
             lastClass = -1;
             lastContactTime = double.NaN;
@@ -196,7 +195,9 @@ namespace HeadGait
         /// <summary>
         /// Degrees the head's tilt moved over the newest <see cref="HeadTilt.Span"/> seconds (<see cref="HeadTilt"/>), for
         /// <see cref="PhaseFilterSettings.MaxStartTiltChange"/>; call it for every window, in order (it reads every
-        /// <see cref="HeadTilt.EveryWindows"/>). 0 without the time filter or with both limits off.
+        /// <see cref="HeadTilt.EveryWindows"/>). 0 without the time filter or with both limits off. <see cref="Reset"/> leaves
+        /// it be: a batch reads its windows' tilt before the restarts between them reset the classifier
+        /// (<see cref="LearnedWindowBatch"/>), and one at a time must read the same.
         /// </summary>
         public double ReadTilt(SignalWindow window)
         {
