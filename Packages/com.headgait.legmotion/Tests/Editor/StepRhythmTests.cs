@@ -254,10 +254,10 @@ namespace HeadGait.Tests
 
         /// <summary>
         /// Standing, then bending down to the floor and straightening again <paramref name="times"/> times: the head pitches
-        /// forward by 70 degrees over 0.8 s, stays down a second and comes up over 0.6 s, landing with a jolt of 3 m/s^2 that
+        /// forward by <paramref name="degrees"/> over 0.8 s, stays down a second and comes up over 0.6 s, landing with a jolt of 3 m/s^2 that
         /// bumps SMV like a heel strike.
         /// </summary>
-        static Recording PickingThingsUp(int times)
+        static Recording PickingThingsUp(int times, double degrees = 70)
         {
             var rows = new List<RecordedSample>();
             const double g = 9.80665, cycle = 6;
@@ -271,7 +271,7 @@ namespace HeadGait.Tests
                     else if (c < 1.8) pitch = 1;
                     else if (c < 2.4) pitch = 1 - (c - 1.8) / 0.6;
                 }
-                double angle = pitch * 70 * Math.PI / 180;
+                double angle = pitch * degrees * Math.PI / 180;
                 double jolt = t >= 2 && c >= 2.4 ? 3 * Math.Exp(-(c - 2.45) * (c - 2.45) / (2 * 0.04 * 0.04)) : 0;
                 double a = g + jolt;
                 rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
@@ -288,6 +288,101 @@ namespace HeadGait.Tests
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
             foreach (var s in PickingThingsUp(5).Samples) pre.Push(s.Imu, w => { if (thr.Classify(w).IsWalking) walking++; });
             Assert.That(walking, Is.EqualTo(0));
+        }
+
+        /// <summary>
+        /// A model the bend fools: from <c>from</c> to <c>to</c> seconds into each pick-up (by default from the moment the head
+        /// starts coming up until a second after the jolt of straightening), it names the stride's segments in order at a 1.1-s stride, as if walking; standing
+        /// otherwise. <see cref="Time"/> is the newest sample's time of the window it scores next.
+        /// </summary>
+        sealed class FooledByTheBend : ILearnedEvaluator
+        {
+            readonly LearnedClassifier classifier;
+            readonly bool votes;
+            readonly double from, to;
+            public double Time;
+
+            public FooledByTheBend(LearnedClassifier classifier, bool votes, double from = 1.8, double to = 3.4)
+            {
+                this.classifier = classifier;
+                this.votes = votes;
+                this.from = from;
+                this.to = to;
+            }
+
+            public void Evaluate(double[] features, int windows, double[] scores)
+            {
+                var segments = classifier.Segments;
+                int classes = segments.ClassCount;
+                double c = (Time - 2) % 6;
+                int shown = Time >= 2 && c >= from && c < to ? (int)((c - from) / 1.1 * segments.Count) % segments.Count : segments.StandingClass;
+                for (int k = 0; k < classes; k++) scores[k] = votes ? (k == shown ? 10 : 0) : (k == shown ? 0.999 : 0.001 / (classes - 1));
+            }
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void BendingDownToPickSomethingUpStartsNoWalkOfTheLearnedClassifiers(bool svm)
+        {
+            // Without the walking gate the model's word alone would walk through each straightening up.
+            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            LearnedClassifier learned = svm ? new SvmClassifier(models.Svm) : new BlstmClassifier(models.Blstm);
+            learned.Gate = null;
+            var fooled = new FooledByTheBend(learned, svm);
+            learned.Evaluator = fooled;
+            int walking = 0, windows = 0;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(learned.WindowLength, StepRhythm.HistorySamples) });
+            foreach (var s in PickingThingsUp(5).Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    fooled.Time = w.EndTime;
+                    windows++;
+                    if (learned.Classify(w).IsWalking) walking++;
+                });
+            Assert.That(windows, Is.GreaterThan(2500));
+            Assert.That(walking, Is.EqualTo(0));
+            // The same model, the head upright: its fooled second walks.
+            var upright = new FooledByTheBend(learned, svm);
+            learned.Reset();
+            learned.Evaluator = upright;
+            walking = 0;
+            pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(learned.WindowLength, StepRhythm.HistorySamples) });
+            for (int i = 0; i < 1400; i++)
+                pre.Push(new ImuSample(i * 0.01, 0, 0, 9.80665), w =>
+                {
+                    upright.Time = w.EndTime;
+                    if (learned.Classify(w).IsWalking) walking++;
+                });
+            Assert.That(walking, Is.GreaterThan(100), "the model's word walks where the head does not bend");
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AWalkTheBendStartedIsWithdrawnOnceTheTiltMoves(bool svm)
+        {
+            // The model takes bending down (35 degrees: under the limit that ends any walk) for steps from halfway down. The
+            // tilt's half-second means pass the start limit only at the bottom, after the walk began; the walk, not half a
+            // second old, is withdrawn then instead of lasting as long as the model's mistake (1.2 s).
+            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            LearnedClassifier learned = svm ? new SvmClassifier(models.Svm) : new BlstmClassifier(models.Blstm);
+            learned.Gate = null;
+            var fooled = new FooledByTheBend(learned, svm, from: 0.4, to: 1.6);
+            learned.Evaluator = fooled;
+            int run = 0, longest = 0, walks = 0;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(learned.WindowLength, StepRhythm.HistorySamples) });
+            foreach (var s in PickingThingsUp(5, degrees: 35).Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    fooled.Time = w.EndTime;
+                    if (learned.Classify(w).IsWalking)
+                    {
+                        if (run++ == 0) walks++;
+                        longest = Math.Max(longest, run);
+                    }
+                    else run = 0;
+                });
+            Assert.That(walks, Is.GreaterThanOrEqualTo(1), "the bend's onset fools the model into a walk");
+            Assert.That(longest, Is.LessThan(70), "withdrawn within 0.7 s");
         }
     }
 }

@@ -67,23 +67,20 @@ namespace HeadGait
         public double RhythmHoldPeriods = 3.5;
 
         /// <summary>
-        /// Most the head's tilt may have moved over the newest <see cref="TiltSpan"/> seconds for a walk to start (degrees).
+        /// Most the head's tilt may have moved over the newest <see cref="HeadTilt.Span"/> seconds for a walk to start (degrees).
         /// Bending down to pick something up and straightening again bumps the head like a step. On the real glasses the
         /// tilt moves more than 25 degrees in 2 s in 43 % of the picking-up time, 8 % of the walking, 6 % of standing and
         /// 4 % of sitting with head movement; only starts are refused. Picking up shown as walking, THR / COR: 5.0 / 16.5 %
         /// without, 3.8 / 13.1 % at 40, 3.0 / 8.5 % at 25; walking shown 84.5 / 89.0 % without, 83.8 / 88.3 % at 25 (see
         /// the measurements log). 0 turns it off.
         /// </summary>
-        public double MaxStartTiltChange = 25;
+        public double MaxStartTiltChange = HeadTilt.DefaultMaxStartChange;
 
         /// <summary>
-        /// A walk in progress stops when the head's tilt moves more than this over the newest <see cref="TiltSpan"/> seconds
+        /// A walk in progress stops when the head's tilt moves more than this over the newest <see cref="HeadTilt.Span"/> seconds
         /// (degrees): a walker who bends down to the floor has stopped walking. 0 turns it off.
         /// </summary>
-        public double MaxWalkingTiltChange = 45;
-
-        /// <summary>Span over which <see cref="MaxStartTiltChange"/> and <see cref="MaxWalkingTiltChange"/> are read (s).</summary>
-        public const double TiltSpan = 2.0;
+        public double MaxWalkingTiltChange = HeadTilt.DefaultMaxWalkingChange;
 
         /// <summary>Windows between two readings of the head's rhythm (<see cref="RhythmStepShare"/>): it changes slowly, and a reading costs.</summary>
         public const int RhythmEveryWindows = 10;
@@ -199,7 +196,7 @@ namespace HeadGait
         double rhythmPeriod;          // the step period of the head's rhythm; 0 when it shows none
         bool rhythmGoesOn;            // whether that rhythm reaches into the newest step
         double lastRhythmPeriod;      // the last step period the rhythm showed (kept through turns and stops); 0 before one
-        double tiltChange;            // degrees the head's tilt moved over the newest TiltSpan seconds
+        double tiltChange;            // degrees the head's tilt moved over the newest HeadTilt.Span seconds
         int rhythmCountdown;
 
         public StepClock(PhaseMap map, StepClockSettings settings = null)
@@ -253,7 +250,7 @@ namespace HeadGait
             rhythmPeriod = rhythm.ShowsStepPeriod ? rhythm.Period : 0;
             rhythmGoesOn = rhythmPeriod > 0 && rhythm.RecentSpread >= StepClockSettings.HoldRecentSpread;
             if (rhythmPeriod > 0) lastRhythmPeriod = rhythmPeriod;
-            tiltChange = settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0 ? TiltChange(window, StepClockSettings.TiltSpan) : 0;
+            tiltChange = settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0 ? HeadTilt.ChangeOver(window, HeadTilt.Span) : 0;
             if (settings.MaxWalkingTiltChange > 0 && tiltChange > settings.MaxWalkingTiltChange) Stop();
             double ratio = settings.RhythmPeriodRatio;
             if (ratio > 1 && rhythmPeriod > 0 && (period > ratio * rhythmPeriod || period * ratio < rhythmPeriod)) period = rhythmPeriod;
@@ -261,47 +258,10 @@ namespace HeadGait
 
         /// <summary>
         /// Whether a walk may not start now: the head's tilt moved more than <see cref="StepClockSettings.MaxStartTiltChange"/>
-        /// over the newest <see cref="StepClockSettings.TiltSpan"/> seconds (read with the rhythm), as in bending down to pick
+        /// over the newest <see cref="HeadTilt.Span"/> seconds (read with the rhythm), as in bending down to pick
         /// something up and straightening again; a walk in progress is not stopped by it.
         /// </summary>
         public bool StartBlocked(double now) => settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange && !IsWalking(now);
-
-        /// <summary>Most spread (standard deviation, m/s^2) of SMV over a half second read for the head's tilt (<see cref="TiltChange"/>).</summary>
-        public const double MaxTiltSmvSpread = 5;
-
-        /// <summary>
-        /// Degrees between the most and the least tilted gravity direction (0.5-s means of the head-frame acceleration
-        /// against its vertical axis, every 0.1 s) over the window's newest <paramref name="seconds"/>. A half second whose
-        /// SMV spreads more than <see cref="MaxTiltSmvSpread"/> holds no steady direction of gravity (knocks, a glitching
-        /// sensor) and is left out: a hostile stream's junk otherwise refused the start of the clean walk after it for 2 s.
-        /// </summary>
-        public static double TiltChange(SignalWindow w, double seconds)
-        {
-            int mean = Math.Max(1, (int)Math.Round(0.5 * w.SampleRate)), hop = Math.Max(1, (int)Math.Round(0.1 * w.SampleRate));
-            int span = Math.Min(Math.Min(w.Count, w.Length), (int)Math.Round(seconds * w.SampleRate));
-            if (span < mean) return 0;
-            double least = double.PositiveInfinity, most = double.NegativeInfinity;
-            for (int end = w.Length; end - mean >= w.Length - span; end -= hop)
-            {
-                double x = 0, y = 0, z = 0, smv = 0, smv2 = 0;
-                for (int i = end - mean; i < end; i++)
-                {
-                    x += w.Forward[i];
-                    y += w.Lateral[i];
-                    z += w.Vertical[i];
-                    smv += w.Smv[i];
-                    smv2 += w.Smv[i] * w.Smv[i];
-                }
-                smv /= mean;
-                if (smv2 / mean - smv * smv > MaxTiltSmvSpread * MaxTiltSmvSpread) continue;
-                double norm = Math.Sqrt(x * x + y * y + z * z);
-                if (norm <= 1e-9) continue;
-                double tilt = Math.Acos(Math.Max(-1, Math.Min(1, z / norm))) * 180 / Math.PI;
-                least = Math.Min(least, tilt);
-                most = Math.Max(most, tilt);
-            }
-            return most >= least ? most - least : 0;
-        }
 
         /// <summary>
         /// Whether a walk in progress goes on whatever the walking gate says: the head's rhythm still shows the step, into

@@ -27,12 +27,14 @@ namespace HeadGait
         readonly double[] batchRow, batchRowScores;
         readonly PhaseSequenceFilter filter;
         readonly CSharpNetwork network;
+        readonly HeadTilt tilt = new HeadTilt();
         ILearnedEvaluator evaluator;
         int lastClass = -1;
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
         double stepPeriod;
         int refusedRun;
+        double walkStartTime = double.NaN;
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -157,6 +159,7 @@ namespace HeadGait
             lastContactTime = double.NaN;
             stepPeriod = DefaultStepPeriod;
             refusedRun = 0;
+            walkStartTime = double.NaN;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -186,7 +189,21 @@ namespace HeadGait
         public GaitPrediction Classify(SignalWindow window)
         {
             evaluator.Evaluate(Standardise(window), 1, scores);
-            return Decide(window.EndTime, window.SampleRate, JudgeGate(window));
+            return Decide(window.EndTime, window.SampleRate, JudgeGate(window), ReadTilt(window));
+        }
+
+        /// <summary>
+        /// Degrees the head's tilt moved over the newest <see cref="HeadTilt.Span"/> seconds (<see cref="HeadTilt"/>), for
+        /// <see cref="PhaseFilterSettings.MaxStartTiltChange"/>; call it for every window, in order (it reads every
+        /// <see cref="HeadTilt.EveryWindows"/>). 0 without the time filter or with both limits off. <see cref="Reset"/> leaves
+        /// it be: a batch reads its windows' tilt before the restarts between them reset the classifier
+        /// (<see cref="LearnedWindowBatch"/>), and one at a time must read the same.
+        /// </summary>
+        public double ReadTilt(SignalWindow window)
+        {
+            if (filter == null || !(filter.Settings.MaxStartTiltChange > 0 || filter.Settings.MaxWalkingTiltChange > 0)) return 0;
+            tilt.Follow(window);
+            return tilt.Change;
         }
 
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
@@ -204,25 +221,28 @@ namespace HeadGait
         /// <summary>
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
         /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
-        /// their order; the time filter and step period carry over from one to the next.
+        /// their order; the time filter and step period carry over from one to the next. <paramref name="tiltChange"/>: what
+        /// <see cref="ReadTilt"/> read of the window.
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes)
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0)
         {
             Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
-            return Decide(endTime, sampleRate, gate);
+            return Decide(endTime, sampleRate, gate, tiltChange);
         }
 
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange)
         {
             ToProbabilities(scores, probabilities);
+            bool bending = Bending(tiltChange, now);
+            if (bending) gate = GateVerdict.Refuses;
             refusedRun = gate == GateVerdict.Refuses ? refusedRun + 1 : 0;
             if (gate == GateVerdict.Refuses)
             {
-                bool ridden = filter != null && WasWalking && refusedRun <= filter.Settings.RiddenRefusals;
+                bool ridden = filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
                 double keep = ridden ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
                 for (int k = 0; k < probabilities.Length; k++)
                 {
@@ -264,6 +284,7 @@ namespace HeadGait
                 return GaitPrediction.Standing(now, p[best]);
             }
             TrackContacts(best, now);
+            if (!WasWalking) walkStartTime = now;
             lastClass = best;
             // Within the segment, lean towards whichever neighbour scores higher.
             int n = Segments.Count;
@@ -271,6 +292,19 @@ namespace HeadGait
             double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
             return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
+        }
+
+        /// <summary>
+        /// Whether the head's tilt moved too much for walking: more than <see cref="PhaseFilterSettings.MaxStartTiltChange"/>
+        /// to start one or go on with one younger than <see cref="HeadTilt.YoungWalk"/>, more than
+        /// <see cref="PhaseFilterSettings.MaxWalkingTiltChange"/> to go on with an older one.
+        /// </summary>
+        bool Bending(double tiltChange, double now)
+        {
+            if (filter == null) return false;
+            bool young = WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
+            double limit = WasWalking && !young ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
+            return limit > 0 && tiltChange > limit;
         }
 
         /// <summary>

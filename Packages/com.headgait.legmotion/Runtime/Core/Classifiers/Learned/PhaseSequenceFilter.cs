@@ -65,6 +65,20 @@ namespace HeadGait
         /// </summary>
         public int RiddenRefusals = 10;
 
+        /// <summary>
+        /// Most the head's tilt may have moved over the newest <see cref="HeadTilt.Span"/> seconds for a walk to start
+        /// (degrees; the shared step clock's limit, <see cref="StepClockSettings.MaxStartTiltChange"/>): while it moves more,
+        /// a window is standing whatever the model and the gate say. Bending down to pick something up and straightening
+        /// again sways and bumps the head like steps. 0 turns it off.
+        /// </summary>
+        public double MaxStartTiltChange = HeadTilt.DefaultMaxStartChange;
+
+        /// <summary>
+        /// A walk in progress stops outright (no refusal ridden out) when the head's tilt moves more than this (degrees), or
+        /// more than <see cref="MaxStartTiltChange"/> within <see cref="HeadTilt.YoungWalk"/> of its start. 0 turns it off.
+        /// </summary>
+        public double MaxWalkingTiltChange = HeadTilt.DefaultMaxWalkingChange;
+
         /// <summary>Weight of the model's standing probability in a window the gate is sure of (see <see cref="SureWalkingLogOdds"/>).</summary>
         public double SureWalkingStandingWeight = 0.01;
     }
