@@ -349,7 +349,8 @@ namespace HeadGait
 
         /// <summary>
         /// The part of a move of the clock by <paramref name="delta"/> (stride fraction) that it may make at once: all of a
-        /// forward move, and of a step back the part over which neither foot goes between swing and stance. Back over a
+        /// forward move (and of a step back of nearly half a stride, taken forward: <see cref="OtherFootBehind"/>), and of a
+        /// step back the part over which neither foot goes between swing and stance. Back over a
         /// contact the foot would land again, back over a toe-off it would drop from swing to the ground: both count as a
         /// contact of that foot, twice in a row. The rest is left to <see cref="lagRemaining"/> (taken in at
         /// <see cref="AnimatorSettings.CatchUpPace"/>).
@@ -357,6 +358,7 @@ namespace HeadGait
         double BackOverNoContact(double delta)
         {
             if (delta >= 0) return delta;
+            if (delta < -OtherFootBehind) return delta + 1;
             bool left = GaitPhases.IsStance(map.PhaseAt(Foot.Left, s, stepPeriod));
             bool right = GaitPhases.IsStance(map.PhaseAt(Foot.Right, s, stepPeriod));
             double clear = 0;
@@ -371,6 +373,16 @@ namespace HeadGait
             lagRemaining += delta + allowed;
             return -allowed;
         }
+
+        /// <summary>
+        /// A phase further behind the clock than this (stride fraction) is within a tenth of a step of half a stride: the
+        /// other foot's phase, as much ahead as behind, and the clock goes forward to it (passing the feet's events in
+        /// order) rather than falling back most of a step. Looked at on the glasses (`realworld`, avatar, THR / COR / SVM /
+        /// BLSTM; steps per step of the signal, alternating feet): none 1.02 / 1.00 / 0.92 / 0.90, 97.8 / 97.0 / 96.4 /
+        /// 95.6 %; 0.45: 1.03 / 1.03 / 0.96 / 0.96, 97.9 / 97.2 / 96.8 / 96.2 %; 0.4: 1.05 / 1.07 / 1.01 / 1.06, 97.9 /
+        /// 97.4 / 96.9 / 96.8 %.
+        /// </summary>
+        const double OtherFootBehind = 0.45;
 
         /// <summary>Resolution (stride fraction; about 5 ms) at which a step back is checked, and its margin before a foot's event (the feet's stance shares are latched, and may differ a little from the map's).</summary>
         const double BackStep = 0.005;
