@@ -43,7 +43,7 @@ namespace HeadGait.Tests
                 holdSettings: new RhythmHoldSettings { Enabled = false });
             var (heldFragments, heldShown) = Walks(calm, held);
             var (unheldFragments, unheldShown) = Walks(calm, unheld);
-            Assert.That(unheldFragments, Is.GreaterThan(2), "the classifier alone breaks the walk up");
+            Assert.That(unheldFragments, Is.GreaterThan(1), "the classifier alone breaks the walk up");
             Assert.That(heldFragments, Is.EqualTo(1));
             Assert.That(heldShown, Is.GreaterThan(0.95));
             Assert.That(heldShown, Is.GreaterThan(unheldShown));
@@ -66,6 +66,40 @@ namespace HeadGait.Tests
         }
 
         static int Walking(List<AnimatorFrame> frames) => frames.FindAll(f => f.State != LocomotionState.Standing).Count;
+
+        [Test]
+        public void AWalkHandedBackOnTheOtherFootKeepsTheFeetAlternating()
+        {
+            // A 0.5-s-step walk: the classifier drops it to standing for a second (the hold runs its clock on), and picks it
+            // up again anywhere from a little to well over half a stride off the held clock (the other foot's phase, or
+            // its own phase flipping feet). However far, and whichever way, the avatar's feet keep alternating.
+            const double step = 0.5, dt = 0.01;
+            for (double offset = 0.1; offset < 0.95; offset += 0.05)
+            {
+                var hold = new RhythmHold(PhaseMap.Perry);
+                var animator = new GaitAnimatorStateMachine(PhaseMap.Perry);
+                var times = new List<double>();
+                var left = new List<GaitPhase>();
+                var right = new List<GaitPhase>();
+                var rhythm = new RhythmReading(true, step);
+                for (int i = 0; i < 800; i++)
+                {
+                    double t = i * dt, position = t / (2 * step);
+                    var p = t < 3 ? GaitPrediction.Walking(t, position, step, 1, PhaseMap.Perry)
+                        : t < 4 ? GaitPrediction.Standing(t)
+                        : GaitPrediction.Walking(t, PhaseMap.Wrap(position + offset), step, 1, PhaseMap.Perry);
+                    var f = animator.Update(hold.Apply(p, rhythm));
+                    if (t > 0.5) Assert.That(f.State, Is.Not.EqualTo(LocomotionState.Standing), $"offset {offset:F2}: the walk is shown throughout");
+                    times.Add(t);
+                    left.Add(f.Left);
+                    right.Add(f.Right);
+                }
+                var contacts = PhaseEvents.Contacts(times, left, right);
+                Assert.That(contacts.Count, Is.GreaterThan(14));
+                for (int c = 1; c < contacts.Count; c++)
+                    Assert.That(contacts[c].Foot, Is.Not.EqualTo(contacts[c - 1].Foot), $"offset {offset:F2}: at {contacts[c].Time:F2} s the {contacts[c].Foot} foot lands twice");
+            }
+        }
 
         [Test]
         public void TheHoldNeverStartsAWalk()
