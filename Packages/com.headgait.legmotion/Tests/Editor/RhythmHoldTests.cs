@@ -65,6 +65,29 @@ namespace HeadGait.Tests
             }
         }
 
+        [Test]
+        public void TheHeadsRhythmAloneDoesNotStartAWalk()
+        {
+            // A gate whose regression refuses every window but which passes any window that keeps a walking rhythm: on the
+            // generated straight walk the rhythm is there throughout, yet a walk starts only where the regression scores
+            // the window as walking (sitting and picking things up keep a step-like rhythm now and then). The same gate
+            // with its regression passing walks, so the stream does start a walk where the score allows.
+            var rec = TestData.Eval("walk_straight");
+            var committed = TestData.CommittedThreshold;
+            var stepped = 0;
+            foreach (double bias in new[] { -1.0, 1.0 })
+            {
+                var weights = new double[WalkingGate.WeightCount];
+                weights[WalkingGate.InputCount] = bias;
+                var settings = committed.Clone();
+                settings.Gate = new WalkingGate(weights, committed.Gate.LevelTolerance, usesStepRhythm: true);
+                var result = ReplayEvaluator.Run(rec, new ThresholdClassifier(settings), keepTrace: true);
+                if (bias < 0) Assert.That(Walking(result.Frames), Is.Zero, "the rhythm alone started a walk");
+                else stepped = Walking(result.Frames);
+            }
+            Assert.That(stepped, Is.GreaterThan(0));
+        }
+
         static int Walking(List<AnimatorFrame> frames) => frames.FindAll(f => f.State != LocomotionState.Standing).Count;
 
         [Test]

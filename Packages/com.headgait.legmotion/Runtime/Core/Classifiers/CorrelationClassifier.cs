@@ -273,7 +273,7 @@ namespace HeadGait
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
             clock.FollowRhythm(window, template.Gate.LevelTolerance);
-            bool moving = template.Gate.Passes(window) && !clock.StartBlocked(now) || clock.HeldByRhythm(now);
+            bool moving = template.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             if (settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows))

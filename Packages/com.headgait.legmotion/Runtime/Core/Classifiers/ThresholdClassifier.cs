@@ -221,7 +221,7 @@ namespace HeadGait
                 }
             }
             clock.FollowRhythm(window, settings.Gate.LevelTolerance);
-            bool moving = settings.Gate.Passes(window) && !clock.StartBlocked(now) || clock.HeldByRhythm(now);
+            bool moving = settings.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             stillWindows = moving ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks
