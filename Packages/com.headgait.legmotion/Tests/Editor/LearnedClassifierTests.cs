@@ -187,6 +187,48 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AWalkTheGateRefusesForAStretchWhileItsRhythmGoesOnStaysOneWalk([Values("svm", "blstm")] string kind)
+        {
+            // The generated straight walk, its gate swapped for one that refuses every window for 1.5 s in the middle, as
+            // the gate refuses slow, calm glasses wearers' heads: the head's rhythm goes on, so the walk goes on (THR and
+            // COR's step clock rides such refusals out: StepClock.HeldByRhythm). Without the hold it ended after 10 refusals.
+            var rec = TestData.Eval("walk_straight");
+            var models = GaitModels.Load(Models);
+            double from = rec.Samples[rec.Samples.Count / 2].Imu.Time, to = from + 1.5;
+            List<(double time, bool walking)> Shown(PhaseFilterSettings settings)
+            {
+                LearnedClassifier c = kind == "svm" ? new SvmClassifier(models.Svm, settings) : new BlstmClassifier(models.Blstm, settings);
+                var gate = c.Gate;
+                var weights = new double[WalkingGate.LinearWeightCount];
+                weights[weights.Length - 1] = -100;
+                var refusing = WalkingGate.FromWeights(weights, gate.LevelTolerance);
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = c.WindowLength });
+                var shown = new List<(double, bool)>();
+                foreach (var s in rec.Samples)
+                    pre.Push(s.Imu, w =>
+                    {
+                        c.Gate = w.EndTime >= from && w.EndTime < to ? refusing : gate;
+                        shown.Add((w.EndTime, c.Classify(w).IsWalking));
+                    });
+                return shown;
+            }
+            PhaseFilterSettings Settings(bool hold)
+            {
+                var settings = kind == "svm" ? SvmClassifier.DefaultFilter() : new PhaseFilterSettings();
+                settings.HoldOnRhythm = hold;
+                return settings;
+            }
+            Assert.That(new PhaseFilterSettings().HoldOnRhythm, Is.True);
+            var held = Shown(Settings(true));
+            var refused = held.FindAll(p => p.time >= from && p.time < to);
+            Assert.That(refused.Count, Is.GreaterThan(100));
+            Assert.That(held.Exists(p => p.time > from - 1 && p.time < from && p.walking), Is.True, "walking before the refusals");
+            Assert.That(held.FindAll(p => p.time >= from - 0.5 && p.time < to + 0.5).TrueForAll(p => p.walking), Is.True, "one walk through the refusals");
+            var unheld = Shown(Settings(false));
+            Assert.That(unheld.FindAll(p => p.time >= from && p.time < to).Exists(p => !p.walking), Is.True, "without the hold the refusals end the walk");
+        }
+
+        [Test]
         public void TheGateVerdictFollowsItsLogOdds()
         {
             var rec = TestData.Eval("walk_straight");

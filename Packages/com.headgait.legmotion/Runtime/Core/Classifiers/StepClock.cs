@@ -259,7 +259,7 @@ namespace HeadGait
             rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
             var rhythm = StepRhythm.Of(window, levelTolerance);
             rhythmPeriod = rhythm.ShowsStepPeriod ? rhythm.Period : 0;
-            rhythmGoesOn = rhythmPeriod > 0 && rhythm.RecentSpread >= StepClockSettings.HoldRecentSpread;
+            rhythmGoesOn = rhythm.HoldsWalk;
             if (rhythmPeriod > 0) lastRhythmPeriod = rhythmPeriod;
             tiltChange = settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0 ? HeadTilt.ChangeOver(window, HeadTilt.Span) : 0;
             if (settings.MaxWalkingTiltChange > 0 && tiltChange > settings.MaxWalkingTiltChange) Stop();

@@ -75,6 +75,14 @@ namespace HeadGait
         /// <summary>Whether <see cref="Period"/> is clearly the step's: SMV repeats there while the head sways back.</summary>
         public bool ShowsStepPeriod => Period > 0 && Bounce > PeriodBounce && Sway < PeriodSway;
 
+        /// <summary>
+        /// Whether the rhythm holds a walk in progress: it shows the step period, into the newest step
+        /// (<see cref="StepClockSettings.HoldRecentSpread"/>). The step clock (<see cref="StepClock.HeldByRhythm"/>) and the
+        /// learned classifiers' time filter (<see cref="PhaseFilterSettings.HoldOnRhythm"/>) ride out the walking gate's
+        /// refusals while it does.
+        /// </summary>
+        public bool HoldsWalk => ShowsStepPeriod && RecentSpread >= StepClockSettings.HoldRecentSpread;
+
         public bool IsWalking => Period > 0 && Bounce > MinBounce && Sway < MaxSway && Stride > MinStride && Forward > MinForward
             && RecentSpread >= MinRecentSpread;
 

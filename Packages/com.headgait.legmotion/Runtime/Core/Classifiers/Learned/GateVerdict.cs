@@ -6,6 +6,12 @@ namespace HeadGait
         /// <summary>Not walking: the window is standing whatever the model scores.</summary>
         Refuses,
 
+        /// <summary>
+        /// Refuses, while the head's rhythm holds a walk (<see cref="StepRhythm.HoldsWalk"/>): a walk in progress rides it
+        /// out however long it lasts (<see cref="PhaseFilterSettings.HoldOnRhythm"/>); otherwise as <see cref="Refuses"/>.
+        /// </summary>
+        RefusesInStepRhythm,
+
         /// <summary>May be walking: the model decides.</summary>
         Passes,
 

@@ -28,6 +28,8 @@ namespace HeadGait
         readonly PhaseSequenceFilter filter;
         readonly CSharpNetwork network;
         readonly HeadTilt tilt = new HeadTilt();
+        bool rhythmHolds;     // whether the head's rhythm held a walk at its last reading (PhaseFilterSettings.HoldOnRhythm)
+        int rhythmCountdown;  // windows until the next reading
         ILearnedEvaluator evaluator;
         int lastClass = -1;
         double lastTime = double.NaN;
@@ -210,12 +212,25 @@ namespace HeadGait
         public GateVerdict JudgeGate(SignalWindow window)
         {
             if (Gate == null) return GateVerdict.Passes;
-            if (!Gate.Passes(window, out double logOdds)) return GateVerdict.Refuses;
+            FollowRhythm(window);
+            if (!Gate.Passes(window, out double logOdds)) return rhythmHolds ? GateVerdict.RefusesInStepRhythm : GateVerdict.Refuses;
             if (filter == null) return GateVerdict.Passes;
             if (logOdds >= filter.Settings.SureWalkingLogOdds) return GateVerdict.SurelyWalking;
             if (!filter.Settings.SureOnStepRhythm || !Gate.UsesStepRhythm) return GateVerdict.Passes;
             // A pass without positive log-odds was the rhythm's; otherwise ask it.
             return logOdds <= 0 || StepRhythm.Of(window, Gate.LevelTolerance).IsWalking ? GateVerdict.SurelyWalking : GateVerdict.Passes;
+        }
+
+        /// <summary>
+        /// Reads whether the head's rhythm holds a walk (<see cref="StepRhythm.HoldsWalk"/>, levelled as the gate levels it)
+        /// every <see cref="StepClockSettings.RhythmEveryWindows"/> windows, for <see cref="PhaseFilterSettings.HoldOnRhythm"/>.
+        /// <see cref="Reset"/> leaves it be, as it leaves the tilt (<see cref="ReadTilt"/>).
+        /// </summary>
+        void FollowRhythm(SignalWindow window)
+        {
+            if (filter == null || !filter.Settings.HoldOnRhythm || rhythmCountdown-- > 0) return;
+            rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
+            rhythmHolds = StepRhythm.Of(window, Gate.LevelTolerance).HoldsWalk;
         }
 
         /// <summary>
@@ -239,8 +254,12 @@ namespace HeadGait
             ToProbabilities(scores, probabilities);
             bool bending = Bending(tiltChange, now);
             if (bending) gate = GateVerdict.Refuses;
-            refusedRun = gate == GateVerdict.Refuses ? refusedRun + 1 : 0;
-            if (gate == GateVerdict.Refuses)
+            bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
+            refusedRun = refused ? refusedRun + 1 : 0;
+            // While the head's rhythm holds a walk in progress, the model decides as if the gate had passed the window;
+            // the refusals still count, so one the rhythm no longer holds ends the walk at once.
+            bool heldByRhythm = gate == GateVerdict.RefusesInStepRhythm && filter != null && filter.Settings.HoldOnRhythm && WasWalking;
+            if (refused && !heldByRhythm)
             {
                 bool ridden = filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
                 double keep = ridden ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
