@@ -154,5 +154,73 @@ namespace HeadGait.Tests
             Assert.That(summary.Still[RealActivity.Standing].Reference, Is.EqualTo(0));
             Assert.That(summary.TugAvatar, Is.NaN);
         }
+
+        /// <summary>Two walks with a 3 s stand between them; the avatar's frames (one per sample) come from <paramref name="walking"/>.</summary>
+        static (Recording Rec, RhythmReference Reference, List<GaitPrediction> Predictions, List<AnimatorFrame> Frames) TwoBouts(ulong seed, Func<RhythmReference, double, bool> walking)
+        {
+            var subject = GaitSubject.Random(seed);
+            subject.StepFrequency = 1.6;
+            var rec = WalkingStreamGenerator.Generate($"p{seed}_e1_walking", subject, new StreamScript().Stand(5).Walk(12, Foot.Left).Stand(3).Walk(12, Foot.Right).Stand(5), seed);
+            rec.Metadata["activity"] = RealActivity.Walking;
+            var reference = RhythmReference.Of(rec);
+            var p = new List<GaitPrediction>();
+            var f = new List<AnimatorFrame>();
+            foreach (var s in rec.Samples)
+            {
+                double t = s.Imu.Time;
+                bool w = walking(reference, t);
+                p.Add(w ? GaitPrediction.Walking(t, 0, 0.5, 1, GaitPhase.MidStance, GaitPhase.MidSwing) : GaitPrediction.Standing(t));
+                f.Add(new AnimatorFrame(t, w ? LocomotionState.Walking : LocomotionState.Standing, 0, w ? GaitPhase.MidStance : GaitPhase.Standing, w ? GaitPhase.MidSwing : GaitPhase.Standing, w ? 1 : 0, 0.5, false));
+            }
+            return (rec, reference, p, f);
+        }
+
+        [TestCase(0.1)]
+        [TestCase(0.7)]
+        public void BoutsMetStandingMeasureTheDelayFromTheFirstStepToTheAvatarWalking(double delay)
+        {
+            // The avatar walks from each bout's first step + delay to its end.
+            var (rec, reference, p, f) = TwoBouts(21, (r, t) => r.Bouts.Any(b => t >= b.Start + delay && t < b.End));
+            Assert.That(reference.Bouts.Count, Is.EqualTo(2), string.Join("; ", reference.Bouts));
+            var score = RealWorldScore.Of(rec, reference, "late", p, f);
+            Assert.That(score.StandingStartDelays, Has.Count.EqualTo(2));
+            foreach (var d in score.StandingStartDelays) Assert.That(d, Is.EqualTo(delay).Within(0.02));
+        }
+
+        [Test]
+        public void ABoutTheAvatarWalksIntoFromBeforeIsNotCountedAsMetStanding()
+        {
+            // The avatar walks from 0.2 s into the first bout through the stand to the end of the second (a hold carrying it).
+            var (rec, reference, p, f) = TwoBouts(22, (r, t) => t >= r.Bouts[0].Start + 0.2 && t < r.Bouts[r.Bouts.Count - 1].End);
+            Assert.That(reference.Bouts.Count, Is.EqualTo(2), string.Join("; ", reference.Bouts));
+            var score = RealWorldScore.Of(rec, reference, "carried", p, f);
+            // The old late start counts the second bout as started at once; met standing, only the first counts.
+            Assert.That(score.StartDelays, Has.Count.EqualTo(2));
+            Assert.That(score.StartDelays[1], Is.EqualTo(0));
+            Assert.That(score.StandingStartDelays, Has.Count.EqualTo(1));
+            Assert.That(score.StandingStartDelays[0], Is.EqualTo(0.2).Within(0.02));
+        }
+
+        [Test]
+        public void ABoutTheAvatarNeverWalksCountsItsWholeLength()
+        {
+            var (rec, reference, p, f) = TwoBouts(23, (r, t) => false);
+            var score = RealWorldScore.Of(rec, reference, "never", p, f);
+            Assert.That(score.StandingStartDelays, Has.Count.EqualTo(2));
+            for (int b = 0; b < 2; b++) Assert.That(score.StandingStartDelays[b], Is.EqualTo(reference.Bouts[b].End - reference.Bouts[b].Start).Within(0.02));
+        }
+
+        [Test]
+        public void StandingStartsSummariseCountMedianNinetiethAndShareWithinTheLimit()
+        {
+            var starts = RealWorldSummary.StandingStarts.Of(new[] { 0.9, 0.1, 0.2, 0.3, 0.5, 0.25, 0.15, 0.4, 0.35, 2.0 });
+            Assert.That(starts.Count, Is.EqualTo(10));
+            Assert.That(starts.Median, Is.EqualTo(0.35));
+            Assert.That(starts.Ninetieth, Is.EqualTo(0.9));
+            Assert.That(starts.ShareWithin, Is.EqualTo(0.5));
+            var none = RealWorldSummary.StandingStarts.Of(Array.Empty<double>());
+            Assert.That(none.Count, Is.EqualTo(0));
+            Assert.That(none.Median, Is.NaN);
+        }
     }
 }

@@ -65,6 +65,16 @@ namespace HeadGait
         public int ReferenceBouts;
         /// <summary>Per bout that starts from standing: how long after its first step the avatar walks (s; the bout's length when never).</summary>
         public List<double> StartDelays = new List<double>();
+        /// <summary>
+        /// Per bout that meets a standing avatar (after at least <see cref="StillBeforeBout"/> s of the signal without walking,
+        /// or with the recording, and the avatar Standing at the bout's first step): how long after that step the avatar
+        /// leaves Standing (s; the bout's length when never). Unlike <see cref="StartDelays"/>, a bout the avatar walks into
+        /// from the one before (a hold carrying it) is not counted as started at once: it is left out.
+        /// </summary>
+        public List<double> StandingStartDelays = new List<double>();
+
+        /// <summary>Signal time without walking (s) before a bout for its start to count as a start.</summary>
+        public const double StillBeforeBout = 1.0;
         /// <summary>The signal's median cadence (steps/min; NaN without walking).</summary>
         public double SignalCadence = double.NaN;
 
@@ -148,7 +158,9 @@ namespace HeadGait
             {
                 var (start, end) = reference.Bouts[b];
                 double before = b > 0 ? reference.Bouts[b - 1].End : double.NegativeInfinity;
-                if (start - before < 1.0 || start < first) continue;
+                if (start - before < StillBeforeBout || start < first) continue;
+                double? standing = StandingStartDelay(times, frames, start, end);
+                if (standing.HasValue) score.StandingStartDelays.Add(standing.Value);
                 double delay = end - start;
                 for (int i = 0; i < n; i++)
                 {
@@ -163,6 +175,21 @@ namespace HeadGait
                 score.StartDelays.Add(delay);
             }
             return score;
+        }
+
+        /// <summary>
+        /// From a bout's first step (<paramref name="start"/>) to the first frame at which the avatar is not Standing (s; the
+        /// bout's length when it stands throughout); null when the avatar is not Standing at the first step (the frame
+        /// holding at that time), or no frame holds there.
+        /// </summary>
+        static double? StandingStartDelay(double[] times, IReadOnlyList<AnimatorFrame> frames, double start, double end)
+        {
+            int at = -1;
+            for (int i = 0; i < times.Length && times[i] <= start; i++) at = i;
+            if (at < 0 || frames[at].State != LocomotionState.Standing) return null;
+            for (int i = at + 1; i < times.Length && times[i] < end; i++)
+                if (frames[i].State != LocomotionState.Standing) return times[i] - start;
+            return end - start;
         }
     }
 }

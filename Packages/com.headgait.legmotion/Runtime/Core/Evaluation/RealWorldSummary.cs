@@ -26,6 +26,8 @@ namespace HeadGait
         public double Fragments = double.NaN, ReferenceBouts = double.NaN;
         /// <summary>Median late start of the walking files' bouts and of the timed up-and-go's bouts (s).</summary>
         public double StartDelay = double.NaN, TugStartDelay = double.NaN;
+        /// <summary>Bouts met by a standing avatar (<see cref="RealWorldScore.StandingStartDelays"/>), walking files and TUG.</summary>
+        public StandingStarts WalkingStarts = StandingStarts.Of(Array.Empty<double>()), TugStarts = StandingStarts.Of(Array.Empty<double>());
         /// <summary>Share of the walking files' time that the signal shows walking, and their median cadence (steps/min).</summary>
         public double ReferenceShare = double.NaN, SignalCadence = double.NaN;
         /// <summary>Per still activity: the avatar's and the classifier's walking share of all its time, and the signal's.</summary>
@@ -67,6 +69,7 @@ namespace HeadGait
             s.Fragments = GaitMetrics.Median(walking.Select(x => (double)x.Fragments).ToList());
             s.ReferenceBouts = GaitMetrics.Median(walking.Select(x => (double)x.ReferenceBouts).ToList());
             s.StartDelay = GaitMetrics.Median(walking.SelectMany(x => x.StartDelays).ToList());
+            s.WalkingStarts = StandingStarts.Of(walking.SelectMany(x => x.StandingStartDelays));
             double seconds = walking.Sum(x => x.Seconds);
             if (seconds > 0) s.ReferenceShare = refSeconds / seconds;
             s.SignalCadence = GaitMetrics.Median(walking.Select(x => x.SignalCadence).Where(v => !double.IsNaN(v)).ToList());
@@ -86,7 +89,34 @@ namespace HeadGait
             }
             if (tugRef > 0) s.TugAvatarOfReference = tug.Sum(x => x.AvatarWalkingInReference) / tugRef;
             s.TugStartDelay = GaitMetrics.Median(tug.SelectMany(x => x.StartDelays).ToList());
+            s.TugStarts = StandingStarts.Of(tug.SelectMany(x => x.StandingStartDelays));
             return s;
+        }
+
+        /// <summary>Delays from a bout's first step to a standing avatar leaving Standing: how many, median, 90th percentile, share within <see cref="Within"/>.</summary>
+        public readonly struct StandingStarts
+        {
+            /// <summary>The limit: shown walking within this long of the first step (s).</summary>
+            public const double Within = 0.3;
+
+            public readonly int Count;
+            public readonly double Median, Ninetieth, ShareWithin;
+
+            StandingStarts(int count, double median, double ninetieth, double shareWithin)
+            {
+                Count = count;
+                Median = median;
+                Ninetieth = ninetieth;
+                ShareWithin = shareWithin;
+            }
+
+            public static StandingStarts Of(IEnumerable<double> delays)
+            {
+                var sorted = delays.OrderBy(d => d).ToList();
+                if (sorted.Count == 0) return new StandingStarts(0, double.NaN, double.NaN, double.NaN);
+                return new StandingStarts(sorted.Count, GaitMetrics.Median(sorted), GaitMetrics.Percentile(sorted, 0.9),
+                    (double)sorted.Count(d => d <= Within) / sorted.Count);
+            }
         }
 
         static double Pooled(IEnumerable<RealWorldScore> scores)
