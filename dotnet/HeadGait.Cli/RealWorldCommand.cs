@@ -24,15 +24,50 @@ namespace HeadGait.Cli
             var perPerson = new Option<string>("--per-person") { Description = "also write every recording's scores (person, activity, classifier) to this CSV" };
             var cv = new Option<string>("--cv") { Description = "person: leave one person out: each person's recordings are judged by walking gates trained on the --train recordings and the other people's recordings in --data (as `train --real` trains them); the rest of each model as shipped" };
             var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
+            var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (defaults 0.15 s, 0, 0: any time); off as shipped" };
             var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, late start and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
-                data, classifier, models, perPerson, cv, train,
+                data, classifier, models, perPerson, cv, train, firstStep,
             };
-            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train)));
+            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train), ParseFirstStep(parse.GetValue(firstStep))));
             return command;
         }
 
-        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train)
+        /// <summary>Reads --first-step (MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]]); null when not given.</summary>
+        static FirstStepStartSettings ParseFirstStep(string text)
+        {
+            if (string.IsNullOrWhiteSpace(text)) return null;
+            var parts = text.Split(',');
+            var values = new double[parts.Length];
+            for (int i = 0; i < parts.Length; i++)
+                if (parts.Length > 4 || !double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out values[i]) || !(values[i] >= 0) || values[i] > 100)
+                    throw new UsageException($"--first-step '{text}' is not MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (up to four numbers of 0 to 100)");
+            var s = new FirstStepStartSettings { Margin = values[0] };
+            if (values.Length > 1) s.ConfirmWithin = values[1];
+            if (values.Length > 2) s.KeepMargin = values[2];
+            if (values.Length > 3) s.ResumeWithin = values[3];
+            return s;
+        }
+
+        /// <summary>THR or COR with its step clock's first-step start set to <paramref name="firstStep"/>; any other classifier as it is.</summary>
+        static IGaitClassifier WithFirstStep(IGaitClassifier c, FirstStepStartSettings firstStep)
+        {
+            switch (c)
+            {
+                case ThresholdClassifier thr:
+                    var s = thr.Settings.Clone();
+                    s.Clock.FirstStep = firstStep.Clone();
+                    return new ThresholdClassifier(s);
+                case CorrelationClassifier cor:
+                    var settings = new CorrelationSettings();
+                    settings.Clock.FirstStep = firstStep.Clone();
+                    return new CorrelationClassifier(cor.Template, settings);
+                default:
+                    return c;
+            }
+        }
+
+        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep)
         {
             bool byPerson = cv switch
             {
@@ -51,6 +86,7 @@ namespace HeadGait.Cli
             Parallel.For(0, recordings.Count, i => references[i] = RhythmReference.Of(recordings[i]));
             Console.WriteLine($"HeadGait realworld: {recordings.Count} recordings of {recordings.Select(RealActivity.PersonOf).Distinct().Count()} people from {string.Join(", ", data)}, models from {folder}");
             var gates = byPerson ? PersonGates(recordings, train) : null;
+            if (firstStep != null) Console.WriteLine($"THR and COR start on a first step the gate refuses by less than {firstStep.Margin} log-odds (confirmed within {firstStep.ConfirmWithin} s, kept above -{firstStep.KeepMargin}, resumed within {(firstStep.ResumeWithin > 0 ? firstStep.ResumeWithin + " s" : "any time")}).");
             if (byPerson) Console.WriteLine($"Leave one person out: each person judged by walking gates trained on {string.Join(", ", train)} and the other {gates.Count - 1} people.");
             Console.WriteLine();
 
@@ -65,6 +101,7 @@ namespace HeadGait.Cli
                     var c = models.Create(name, out string w);
                     if (w != null) warning = w;
                     if (gates != null) c = WithGates(c, gates[RealActivity.PersonOf(recordings[i])]);
+                    if (firstStep != null) c = WithFirstStep(c, firstStep);
                     var result = ReplayEvaluator.Run(recordings[i], c, keepTrace: true);
                     scores[i] = RealWorldScore.Of(recordings[i], references[i], c.Name, result.Predictions, result.Frames);
                 });
@@ -132,6 +169,7 @@ namespace HeadGait.Cli
                 ("bouts met standing, walking files / TUG", x => $"{x.WalkingStarts.Count} / {x.TugStarts.Count}"),
                 ("  their delay, median / 90th pct (s)", x => $"{Num(x.WalkingStarts.Median, "F2")}/{Num(x.WalkingStarts.Ninetieth, "F2")} | {Num(x.TugStarts.Median, "F2")}/{Num(x.TugStarts.Ninetieth, "F2")}"),
                 ($"  started within {RealWorldSummary.StandingStarts.Within:0.0} s", x => $"{Pct(x.WalkingStarts.ShareWithin)} / {Pct(x.TugStarts.ShareWithin)}"),
+                ("  classifier's own, walking files: n, median / 90th", x => $"{x.ClassifierStarts.Count}, {Num(x.ClassifierStarts.Median, "F2")}/{Num(x.ClassifierStarts.Ninetieth, "F2")}"),
             };
             foreach (var activity in new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup })
                 if (s.Any(x => x.Still.ContainsKey(activity)))

@@ -274,9 +274,11 @@ namespace HeadGait
             int bestIndex = -1, bestTemplate = 0;
             clock.FollowRhythm(window, template.Gate.LevelTolerance);
             bool moving = template.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
-            stillWindows = moving ? 0 : stillWindows + 1;
+            bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
+            stillWindows = moving || firstStep ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
-            if (settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows))
+            bool walkingBefore = clock.IsWalking(now);
+            if (settings.Clock.ContactAllowed(moving || firstStep, walkingBefore, stillWindows))
             {
                 int from = 0, to = Math.Min(periods - 1, valid - settings.MinStepSamples);
                 if (clock.IsWalking(now) && to >= 0)
@@ -332,7 +334,8 @@ namespace HeadGait
                     ContactDetected?.Invoke(contact, recentEvidence[centre], r, t);
                 }
             }
-            if (!clock.IsWalking(now) && settings.StartMargin >= 0 && moving) TryStart(window, now, valid);
+            if (!clock.IsWalking(now) && settings.StartMargin >= 0 && (moving || firstStep)) TryStart(window, now, valid);
+            clock.FollowFirstStep(now, firstStep, walkingBefore, gateLogOdds);
             return clock.Predict(now, Math.Max(0, best));
         }
 

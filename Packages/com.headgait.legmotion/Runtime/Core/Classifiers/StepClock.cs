@@ -184,7 +184,15 @@ namespace HeadGait
         /// </summary>
         public double PoseFitDelay;
 
-        public StepClockSettings Clone() => (StepClockSettings)MemberwiseClone();
+        /// <summary>The provisional start on a walk's first contact (<see cref="FirstStepStartSettings"/>; off unless the detector sets it).</summary>
+        public FirstStepStartSettings FirstStep = new FirstStepStartSettings();
+
+        public StepClockSettings Clone()
+        {
+            var c = (StepClockSettings)MemberwiseClone();
+            c.FirstStep = FirstStep.Clone();
+            return c;
+        }
     }
 
     /// <summary>
@@ -197,6 +205,8 @@ namespace HeadGait
         readonly StepClockSettings settings;
         readonly PhaseMap map;
         readonly StanceLatch stance = new StanceLatch();
+        readonly FirstStepStart firstStep;
+        double lastWalking = double.NegativeInfinity; // when a walk was last predicted
         double lastContact;
         double period;
         double sideEvidence;
@@ -215,6 +225,7 @@ namespace HeadGait
             this.map = map ?? throw new ArgumentNullException(nameof(map));
             this.settings = settings ?? new StepClockSettings();
             if (!(this.settings.PeriodWeight > 0 && this.settings.PeriodWeight <= 1)) throw new ArgumentException("PeriodWeight must be more than 0 and at most 1.");
+            firstStep = new FirstStepStart(this.settings.FirstStep);
             Reset();
         }
 
@@ -242,6 +253,8 @@ namespace HeadGait
             lastRhythmPeriod = 0;
             tiltChange = 0;
             rhythmCountdown = 0;
+            firstStep.Reset();
+            lastWalking = double.NegativeInfinity;
         }
 
         /// <summary>The step period (s) the head's rhythm showed at its last reading; 0 when it showed none.</summary>
@@ -277,6 +290,34 @@ namespace HeadGait
         public bool StartBlocked(double now, double gateLogOdds)
             => !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange
                 || settings.StartNeedsGateScore && !(gateLogOdds > 0));
+
+        /// <summary>
+        /// Whether a contact now may start a provisional walk although the gate refuses (<see cref="FirstStepStartSettings"/>):
+        /// none under way (or soon enough after the last one, <see cref="FirstStepStartSettings.ResumeWithin"/>), the gate's
+        /// log-odds <paramref name="gateLogOdds"/> within the margin, the head's tilt steady
+        /// (<see cref="StepClockSettings.MaxStartTiltChange"/>); while a provisional walk waits, whether a contact may still
+        /// count (the gate within the margin), so its second step can confirm it.
+        /// </summary>
+        public bool MayStartOnFirstStep(double now, double gateLogOdds)
+            => firstStep.Waiting && IsWalking(now)
+                ? gateLogOdds > -settings.FirstStep.Margin
+                : firstStep.Allows(IsWalking(now), gateLogOdds, now - lastWalking) && !(settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange);
+
+        /// <summary>
+        /// After each window's contacts: a walk that began this window on <see cref="MayStartOnFirstStep"/> (it did not walk
+        /// before, <paramref name="walkingBefore"/>) waits; a waiting one is confirmed once the gate's regression passes
+        /// (<paramref name="gateLogOdds"/> &gt; 0) or a second contact comes (<see cref="Contact"/>), and withdrawn
+        /// (<see cref="Stop"/>) when neither happened within <see cref="FirstStepStartSettings.ConfirmWithin"/> or the gate
+        /// refuses by <see cref="FirstStepStartSettings.KeepMargin"/>.
+        /// </summary>
+        public void FollowFirstStep(double now, bool startedOnFirstStep, bool walkingBefore, double gateLogOdds)
+        {
+            if (startedOnFirstStep && !walkingBefore && IsWalking(now)) firstStep.Begin(now);
+            if (!firstStep.Keeps(now, gateLogOdds)) Stop();
+        }
+
+        /// <summary>Whether the walk under way is provisional: started on a first step, the gate not yet passed.</summary>
+        public bool Provisional => firstStep.Waiting;
 
         /// <summary>
         /// Whether a walk in progress goes on whatever the walking gate says: the head's rhythm still shows the step, into
@@ -317,6 +358,7 @@ namespace HeadGait
                     periodMeasured = true;
                 }
                 contactsInBout++;
+                if (contactsInBout >= 2) firstStep.Confirm();
                 // The previous contact was the other foot (or, steps later, the same): its evidence counts against this
                 // one being the same side (or for it).
                 sideEvidence = leftEvidence + (steps % 2 == 1 ? -1 : 1) * settings.SideMemory * sideEvidence;
@@ -343,6 +385,7 @@ namespace HeadGait
         /// <summary>Ends the walking bout now (the head has stopped moving like walking): the next contact starts a new one.</summary>
         public void Stop()
         {
+            firstStep.Reset();
             contactsInBout = 0;
             periodMeasured = false;
             lastContact = double.NegativeInfinity;
@@ -414,6 +457,7 @@ namespace HeadGait
                 stance.Reset();
                 return GaitPrediction.Standing(now, confidence);
             }
+            lastWalking = now;
             double s = StridePosition(now);
             if (!double.IsNaN(reported))
             {

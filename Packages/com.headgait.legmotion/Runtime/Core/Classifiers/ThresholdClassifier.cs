@@ -222,14 +222,16 @@ namespace HeadGait
             }
             clock.FollowRhythm(window, settings.Gate.LevelTolerance);
             bool moving = settings.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
-            stillWindows = moving ? 0 : stillWindows + 1;
+            bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
+            stillWindows = moving || firstStep ? 0 : stillWindows + 1;
             if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
+            bool walkingBefore = clock.IsWalking(now);
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks
             // back over its newest half second: a stream that begins mid-step crossed before it, and that contact is
             // dated when it happened, not when the stream began.
             int ago = CrossingAge(window, threshold, fresh ? (int)Math.Round(0.5 * window.SampleRate) : 1);
             fresh = false;
-            bool crossed = armed && ago >= 0 && settings.Clock.ContactAllowed(moving, clock.IsWalking(now), stillWindows);
+            bool crossed = armed && ago >= 0 && settings.Clock.ContactAllowed(moving || firstStep, clock.IsWalking(now), stillWindows);
             if (crossed)
             {
                 armed = false;
@@ -246,6 +248,7 @@ namespace HeadGait
                     ContactDetected?.Invoke(time, evidence);
                 }
             }
+            clock.FollowFirstStep(now, firstStep, walkingBefore, gateLogOdds);
             double confidence = clock.IsWalking(now) ? Math.Max(0, 1 - (now - clock.LastContactTime) / (settings.Clock.StandingAfterPeriods * clock.StepPeriod)) : 0;
             return clock.Predict(now, confidence);
         }

@@ -72,6 +72,8 @@ namespace HeadGait
         /// from the one before (a hold carrying it) is not counted as started at once: it is left out.
         /// </summary>
         public List<double> StandingStartDelays = new List<double>();
+        /// <summary>The same for the classifier: bouts at whose first step it predicts standing, and how long until it predicts walking (s).</summary>
+        public List<double> ClassifierStandingStartDelays = new List<double>();
 
         /// <summary>Signal time without walking (s) before a bout for its start to count as a start.</summary>
         public const double StillBeforeBout = 1.0;
@@ -159,8 +161,10 @@ namespace HeadGait
                 var (start, end) = reference.Bouts[b];
                 double before = b > 0 ? reference.Bouts[b - 1].End : double.NegativeInfinity;
                 if (start - before < StillBeforeBout || start < first) continue;
-                double? standing = StandingStartDelay(times, frames, start, end);
+                double? standing = StandingStartDelay(times, i => frames[i].State != LocomotionState.Standing, start, end);
                 if (standing.HasValue) score.StandingStartDelays.Add(standing.Value);
+                double? predicted = StandingStartDelay(times, i => predictions[i].IsWalking, start, end);
+                if (predicted.HasValue) score.ClassifierStandingStartDelays.Add(predicted.Value);
                 double delay = end - start;
                 for (int i = 0; i < n; i++)
                 {
@@ -178,17 +182,16 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// From a bout's first step (<paramref name="start"/>) to the first frame at which the avatar is not Standing (s; the
-        /// bout's length when it stands throughout); null when the avatar is not Standing at the first step (the frame
-        /// holding at that time), or no frame holds there.
+        /// From a bout's first step (<paramref name="start"/>) to the first frame <paramref name="walks"/> (s; the bout's
+        /// length when none does); null when the frame holding at the first step already walks, or no frame holds there.
         /// </summary>
-        static double? StandingStartDelay(double[] times, IReadOnlyList<AnimatorFrame> frames, double start, double end)
+        static double? StandingStartDelay(double[] times, Func<int, bool> walks, double start, double end)
         {
             int at = -1;
             for (int i = 0; i < times.Length && times[i] <= start; i++) at = i;
-            if (at < 0 || frames[at].State != LocomotionState.Standing) return null;
+            if (at < 0 || walks(at)) return null;
             for (int i = at + 1; i < times.Length && times[i] < end; i++)
-                if (frames[i].State != LocomotionState.Standing) return times[i] - start;
+                if (walks(i)) return times[i] - start;
             return end - start;
         }
     }

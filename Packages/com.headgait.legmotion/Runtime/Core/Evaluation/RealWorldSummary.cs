@@ -28,6 +28,8 @@ namespace HeadGait
         public double StartDelay = double.NaN, TugStartDelay = double.NaN;
         /// <summary>Bouts met by a standing avatar (<see cref="RealWorldScore.StandingStartDelays"/>), walking files and TUG.</summary>
         public StandingStarts WalkingStarts = StandingStarts.Of(Array.Empty<double>()), TugStarts = StandingStarts.Of(Array.Empty<double>());
+        /// <summary>The classifier's own (<see cref="RealWorldScore.ClassifierStandingStartDelays"/>), walking files.</summary>
+        public StandingStarts ClassifierStarts = StandingStarts.Of(Array.Empty<double>());
         /// <summary>Share of the walking files' time that the signal shows walking, and their median cadence (steps/min).</summary>
         public double ReferenceShare = double.NaN, SignalCadence = double.NaN;
         /// <summary>Per still activity: the avatar's and the classifier's walking share of all its time, and the signal's.</summary>
@@ -70,6 +72,7 @@ namespace HeadGait
             s.ReferenceBouts = GaitMetrics.Median(walking.Select(x => (double)x.ReferenceBouts).ToList());
             s.StartDelay = GaitMetrics.Median(walking.SelectMany(x => x.StartDelays).ToList());
             s.WalkingStarts = StandingStarts.Of(walking.SelectMany(x => x.StandingStartDelays));
+            s.ClassifierStarts = StandingStarts.Of(walking.SelectMany(x => x.ClassifierStandingStartDelays));
             double seconds = walking.Sum(x => x.Seconds);
             if (seconds > 0) s.ReferenceShare = refSeconds / seconds;
             s.SignalCadence = GaitMetrics.Median(walking.Select(x => x.SignalCadence).Where(v => !double.IsNaN(v)).ToList());

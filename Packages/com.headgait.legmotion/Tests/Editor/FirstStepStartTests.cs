@@ -1,0 +1,117 @@
+using System.Collections.Generic;
+using System.Linq;
+using HeadGait.Synthetic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>The provisional start on a walk's first contact (<see cref="FirstStepStart"/>), in the step clock and in THR on generated walks.</summary>
+    public class FirstStepStartTests
+    {
+        static FirstStepStartSettings On(double margin = 1, double confirmWithin = 0.15, double resumeWithin = 0)
+            => new FirstStepStartSettings { Margin = margin, ConfirmWithin = confirmWithin, ResumeWithin = resumeWithin };
+
+        [Test]
+        public void AProvisionalWalkIsConfirmedByTheGateAndWithdrawnWithoutIt()
+        {
+            var start = new FirstStepStart(On(confirmWithin: 0.15));
+            Assert.That(start.Allows(false, -0.5, double.PositiveInfinity), Is.True);
+            Assert.That(start.Allows(false, -1.5, double.PositiveInfinity), Is.False, "refused by more than the margin");
+            Assert.That(start.Allows(true, -0.5, 0), Is.False, "a walk under way is not started again");
+            start.Begin(10);
+            Assert.That(start.Keeps(10.1, -0.5), Is.True);
+            Assert.That(start.Keeps(10.2, -0.5), Is.False, "the gate did not pass within 0.15 s");
+            Assert.That(start.Waiting, Is.False);
+            start.Begin(20);
+            Assert.That(start.Keeps(20.1, 1), Is.True);
+            Assert.That(start.Waiting, Is.False, "confirmed");
+            Assert.That(start.Keeps(25, -3), Is.True, "a confirmed walk is no longer withdrawn");
+        }
+
+        [Test]
+        public void OffByDefaultAndOnlySoonAfterAWalkWhenResumeWithinIsSet()
+        {
+            Assert.That(new FirstStepStart(new FirstStepStartSettings()).Allows(false, -0.1, double.PositiveInfinity), Is.False);
+            var resume = new FirstStepStart(On(resumeWithin: 3));
+            Assert.That(resume.Allows(false, -0.5, 2), Is.True);
+            Assert.That(resume.Allows(false, -0.5, 4), Is.False);
+        }
+
+        [Test]
+        public void TheClockWithdrawsAProvisionalWalkUnlessTheGatePasses()
+        {
+            var settings = new StepClockSettings { ContactsToStart = 1 };
+            settings.FirstStep = On(confirmWithin: 0.15);
+            foreach (bool gatePasses in new[] { false, true })
+            {
+                var clock = new StepClock(PhaseMap.Perry, settings);
+                Assert.That(clock.MayStartOnFirstStep(5.0, -0.5), Is.True);
+                Assert.That(clock.Contact(4.99, 1), Is.True);
+                clock.FollowFirstStep(5.0, true, false, -0.5);
+                Assert.That(clock.IsWalking(5.0) && clock.Provisional, Is.True);
+                for (double t = 5.01; t <= 5.3; t += 0.01) clock.FollowFirstStep(t, false, true, gatePasses && t > 5.1 ? 1 : -0.5);
+                Assert.That(clock.IsWalking(5.3), Is.EqualTo(gatePasses), gatePasses ? "confirmed by the gate" : "withdrawn");
+                Assert.That(clock.Provisional, Is.False);
+            }
+        }
+
+        [Test]
+        public void ASecondContactConfirmsAProvisionalWalkAndAClearRefusalWithdrawsItAtOnce()
+        {
+            var settings = new StepClockSettings { ContactsToStart = 1 };
+            settings.FirstStep = On(confirmWithin: 0.8);
+            settings.FirstStep.KeepMargin = 2;
+            var clock = new StepClock(PhaseMap.Perry, settings);
+            Assert.That(clock.Contact(4.99, 1), Is.True);
+            clock.FollowFirstStep(5.0, true, false, -0.5);
+            for (double t = 5.01; t < 5.5; t += 0.01) clock.FollowFirstStep(t, false, true, -0.5);
+            Assert.That(clock.Provisional, Is.True, "still waiting, the gate refusing only narrowly");
+            Assert.That(clock.MayStartOnFirstStep(5.5, -0.5), Is.True, "a contact of the waiting walk may count");
+            Assert.That(clock.Contact(5.55, -1), Is.True);
+            Assert.That(clock.Provisional, Is.False, "the second step confirmed it");
+            clock.FollowFirstStep(6.0, false, true, -0.5);
+            Assert.That(clock.IsWalking(6.0), Is.True, "a confirmed walk outlasts ConfirmWithin");
+
+            var refused = new StepClock(PhaseMap.Perry, settings);
+            refused.Contact(4.99, 1);
+            refused.FollowFirstStep(5.0, true, false, -0.5);
+            refused.FollowFirstStep(5.05, false, true, -2.5);
+            Assert.That(refused.IsWalking(5.05), Is.False, "the gate refused by KeepMargin: withdrawn at once");
+        }
+
+        /// <summary>THR's predictions over a generated walk from standing, with a gate that refuses every window by 0.5 log-odds.</summary>
+        static List<GaitPrediction> NarrowlyRefused(FirstStepStartSettings firstStep, out Recording rec)
+        {
+            rec = WalkingStreamGenerator.Generate("first_step", GaitSubject.Random(31), new StreamScript().Stand(3).Walk(10, Foot.Left).Stand(3), 31);
+            var weights = new double[WalkingGate.WeightCount];
+            weights[WalkingGate.InputCount] = -0.5;
+            var settings = new ThresholdSettings { Gate = new WalkingGate(weights) };
+            settings.Clock.FirstStep = firstStep;
+            var thr = new ThresholdClassifier(settings);
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = thr.WindowLength });
+            var predictions = new List<GaitPrediction>();
+            foreach (var s in rec.Samples) pre.Push(s.Imu, w => predictions.Add(thr.Classify(w)));
+            return predictions;
+        }
+
+        [Test]
+        public void ThrStartsOnANarrowlyRefusedFirstContactAndWithdrawsWhenTheGateNeverPasses()
+        {
+            var off = NarrowlyRefused(new FirstStepStartSettings(), out _);
+            Assert.That(off.Any(p => p.IsWalking), Is.False, "without the first-step start the refusing gate shows no walking");
+            var on = NarrowlyRefused(On(confirmWithin: 0.15), out var rec);
+            var firstStep = rec.Samples.First(s => s.Left != GaitPhase.Standing).Imu.Time;
+            var firstWalking = on.FirstOrDefault(p => p.IsWalking);
+            Assert.That(firstWalking.IsWalking, Is.True, "a contact the gate refuses narrowly starts a walk");
+            Assert.That(firstWalking.Time, Is.LessThan(firstStep + 0.6), "on the walk's first step");
+            // Every provisional walk is withdrawn within ConfirmWithin (and a window), as the gate never passes.
+            double since = double.NaN;
+            foreach (var p in on)
+            {
+                if (p.IsWalking && double.IsNaN(since)) since = p.Time;
+                if (p.IsWalking) Assert.That(p.Time - since, Is.LessThanOrEqualTo(0.15 + 0.011));
+                else since = double.NaN;
+            }
+        }
+    }
+}
