@@ -86,7 +86,7 @@ namespace HeadGait.Cli
             Parallel.For(0, recordings.Count, i => references[i] = RhythmReference.Of(recordings[i]));
             Console.WriteLine($"HeadGait realworld: {recordings.Count} recordings of {recordings.Select(RealActivity.PersonOf).Distinct().Count()} people from {string.Join(", ", data)}, models from {folder}");
             var gates = byPerson ? PersonGates(recordings, train) : null;
-            if (firstStep != null) Console.WriteLine($"THR and COR start on a first step the gate refuses by less than {firstStep.Margin} log-odds (confirmed within {firstStep.ConfirmWithin} s, kept above -{firstStep.KeepMargin}, resumed within {(firstStep.ResumeWithin > 0 ? firstStep.ResumeWithin + " s" : "any time")}).");
+            if (firstStep != null) Console.WriteLine($"THR and COR start on a first step the gate refuses by less than {firstStep.Margin} log-odds (confirmed within {firstStep.ConfirmWithin} s{(firstStep.KeepMargin > 0 ? $", withdrawn at once at -{firstStep.KeepMargin}" : "")}{(firstStep.ResumeWithin > 0 ? $", only within {firstStep.ResumeWithin} s of a walk" : "")}).");
             if (byPerson) Console.WriteLine($"Leave one person out: each person judged by walking gates trained on {string.Join(", ", train)} and the other {gates.Count - 1} people.");
             Console.WriteLine();
 
@@ -189,7 +189,8 @@ namespace HeadGait.Cli
             Console.WriteLine("(0 where the avatar still walks from before). Bouts met standing: bouts after >= 1 s without walking (or the recording's");
             Console.WriteLine("start) at whose first step the avatar stands; delay to the avatar leaving Standing (the bout's length when it never does).");
             Console.WriteLine("A bout's first step is a smoothed edge, not a contact: the first moment whose next 0.5 s of SMV spreads at half the");
-            Console.WriteLine("bout's typical level, so it tends to lead the first step's contact (the delays are if anything long).");
+            Console.WriteLine("bout's typical level (RhythmReference), i.e. the first step's rise; THR's first threshold crossing of a bout on the");
+            Console.WriteLine("glasses comes a median 0.16 s before it (10th-90th percentile 0.27 s before to 0.44 s after).");
         }
 
         static void WriteCsv(string path, List<RealWorldScore> scores)

@@ -63,7 +63,11 @@ namespace HeadGait
         public int Fragments;
         /// <summary>The signal's walking bouts.</summary>
         public int ReferenceBouts;
-        /// <summary>Per bout that starts from standing: how long after its first step the avatar walks (s; the bout's length when never).</summary>
+        /// <summary>
+        /// Per bout after at least <see cref="StillBeforeBout"/> s of the signal without walking: how long after its first
+        /// step the avatar walks (s; 0 when it already walks then, as when a hold carries it from the bout before; the
+        /// bout's length when never). See <see cref="StandingStartDelays"/> for the bouts the avatar meets standing.
+        /// </summary>
         public List<double> StartDelays = new List<double>();
         /// <summary>
         /// Per bout that meets a standing avatar (after at least <see cref="StillBeforeBout"/> s of the signal without walking,
