@@ -204,6 +204,8 @@ namespace HeadGait.Cli
                     if (key.StartsWith("prior=", StringComparison.Ordinal)) a.ThresholdPriorSteps = Number(key.Substring(6));
                     else if (key.StartsWith("margin=", StringComparison.Ordinal)) a.AcceptMargin = Number(key.Substring(7));
                     else if (key.StartsWith("gate-cap=", StringComparison.Ordinal)) a.MaxGateShift = Number(key.Substring(9));
+                    else if (key.StartsWith("shift-cap=", StringComparison.Ordinal)) a.LearnedShiftCap = Number(key.Substring(10));
+                    else if (key.StartsWith("shift-prior=", StringComparison.Ordinal)) a.LearnedShiftPrior = Number(key.Substring(12));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
                         switch (key)
@@ -219,7 +221,7 @@ namespace HeadGait.Cli
                             case "learned-channels": a.LearnedChannelGains = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -233,7 +235,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}",
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>

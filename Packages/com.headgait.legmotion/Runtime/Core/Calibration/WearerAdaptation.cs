@@ -62,6 +62,10 @@ namespace HeadGait.Calibration
         /// the output shifts cannot (they only pick the walking class), the gains move every decision.
         /// </summary>
         public bool LearnedChannelGains;
+        /// <summary>Most the refit moves one of the learned models' output biases (<see cref="LearnedAdaptation.DefaultShiftCap"/>; at most <see cref="LearnedAdjustment.MaxBiasShift"/>).</summary>
+        public double LearnedShiftCap = LearnedAdaptation.DefaultShiftCap;
+        /// <summary>L2 pull of the refit's output shifts towards none (<see cref="LearnedAdaptation.BiasPrior"/>).</summary>
+        public double LearnedShiftPrior = LearnedAdaptation.BiasPrior;
         /// <summary>
         /// Self-supervised: read COR's contacts with its walking gate open (<see cref="WearerAdaptation.SelfLabel"/>). The wearer
         /// was asked to walk, so the gate has nothing to decide, and a gate that refuses a calm walker's steps leaves nothing to
@@ -234,7 +238,7 @@ namespace HeadGait.Calibration
         {
             if (shipped == null) return;
             var scaled = profile.ScaledModel(shipped);
-            var adjustment = LearnedAdaptation.Fit(shipped, scaled, make, walk, a.LearnedChannelGains);
+            var adjustment = LearnedAdaptation.Fit(shipped, scaled, make, walk, a.LearnedChannelGains, a.LearnedShiftCap, a.LearnedShiftPrior);
             if (adjustment == null || !adjustment.Changes) return;
             string biasName = make(scaled).OutputBiasName;
             var adjusted = adjustment.AppliedTo(scaled, biasName);

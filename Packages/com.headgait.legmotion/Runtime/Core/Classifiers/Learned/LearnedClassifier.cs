@@ -156,8 +156,8 @@ namespace HeadGait
         /// </summary>
         public const string WearerShiftTensor = "wearer_output_shift";
 
-        /// <summary>Largest |shift| of an output bias a wearer's calibration may make (SVM: a margin; BLSTM: a factor e on a class's odds).</summary>
-        public const double MaxWearerShift = 1.0;
+        /// <summary>Largest |shift| of an output bias a wearer's calibration may make (SVM: margins; BLSTM: log-odds of a class).</summary>
+        public const double MaxWearerShift = 3.0;
 
         /// <summary>The model's <see cref="WearerShiftTensor"/> (<paramref name="count"/> values within +-<see cref="MaxWearerShift"/>), or null without one.</summary>
         protected static double[] ReadWearerShift(ModelFile model, int count)
