@@ -331,6 +331,14 @@ namespace HeadGait.Cli
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-14} {1,6} {2,-6} {3,14} {4,14} {5,7} {6,14} {7,7}", "pooled", "", clf,
                     Cellf(pn), Cellf(Pooled("feet")), Delta(pn, Pooled("feet")), Cellf(Pooled("self")), Delta(pn, Pooled("self"))));
             }
+            // Where the errors are: walking the classifier shows as standing (the walking gate's and the model's standing
+            // decision), against the rest (the wrong phase while walking).
+            Console.WriteLine();
+            Console.WriteLine("Walking shown as standing (share of walking samples), none / feet / self:");
+            string Shown(Cell c) => c == null ? "-" : (100 * GaitMetrics.Pool(c.All).WalkingAsStanding).ToString("F1", CultureInfo.InvariantCulture);
+            foreach (var clf in names)
+                Console.WriteLine($"  {clf}: " + string.Join("  ", styles.Where(st => Get(st, clf, "none") != null)
+                    .Select(st => $"{st} {Shown(Get(st, clf, "none"))}/{Shown(Get(st, clf, "feet"))}/{Shown(Get(st, clf, "self"))}")));
         }
     }
 }
