@@ -182,7 +182,7 @@ namespace HeadGait.Cli
 
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
-        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain,
+        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels,
         /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
@@ -204,6 +204,8 @@ namespace HeadGait.Cli
                     if (key.StartsWith("prior=", StringComparison.Ordinal)) a.ThresholdPriorSteps = Number(key.Substring(6));
                     else if (key.StartsWith("margin=", StringComparison.Ordinal)) a.AcceptMargin = Number(key.Substring(7));
                     else if (key.StartsWith("gate-cap=", StringComparison.Ordinal)) a.MaxGateShift = Number(key.Substring(9));
+                    else if (key.StartsWith("shift-cap=", StringComparison.Ordinal)) a.LearnedShiftCap = Number(key.Substring(10));
+                    else if (key.StartsWith("shift-prior=", StringComparison.Ordinal)) a.LearnedShiftPrior = Number(key.Substring(12));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
                         switch (key)
@@ -215,9 +217,11 @@ namespace HeadGait.Cli
                             case "gates": a.DetectorGates = on; break;
                             case "learned-gate": a.LearnedGate = on; break;
                             case "learned-gain": a.LearnedGain = on; break;
+                            case "learned-refit": a.LearnedRefit = on; break;
+                            case "learned-channels": a.LearnedChannelGains = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -231,7 +235,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}",
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>
@@ -239,10 +243,12 @@ namespace HeadGait.Cli
         {
             if (p == null) return "not fitted";
             var ci = CultureInfo.InvariantCulture;
-            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s), THR {4}, learned gain {5:F2}{6}", p.Steps,
+            string refits = string.Concat(p.LearnedAdjustments.Select(a => string.Format(ci, ", {0} channel gains {1}, {2} output biases moved (largest {3:F2})",
+                a.Kind, string.Join("/", a.ChannelGain.Select(g => g.ToString("0.##", ci))), a.BiasShift.Count(b => b != 0), a.BiasShift.Select(Math.Abs).DefaultIfEmpty(0).Max())));
+            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s), THR {4}, learned gain {5:F2}{6}{7}", p.Steps,
                 p.Correlation.Templates.Count > models.Correlation.Templates.Count ? "own step" : "as trained", p.Correlation.MinCorrelation, p.Correlation.ClockLead,
                 p.Threshold.Serialize() == models.Threshold.Serialize() ? "as trained" : string.Format(ci, "floor {0:F2} (trained {1:F2})", p.Threshold.Floor, models.Threshold.Floor),
-                p.LearnedGain, p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "");
+                p.LearnedGain, p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "", refits);
         }
 
         /// <summary>The BVH a converted recording names in its source line, when it is in the folder.</summary>
@@ -325,6 +331,14 @@ namespace HeadGait.Cli
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-14} {1,6} {2,-6} {3,14} {4,14} {5,7} {6,14} {7,7}", "pooled", "", clf,
                     Cellf(pn), Cellf(Pooled("feet")), Delta(pn, Pooled("feet")), Cellf(Pooled("self")), Delta(pn, Pooled("self"))));
             }
+            // Where the errors are: walking the classifier shows as standing (the walking gate's and the model's standing
+            // decision), against the rest (the wrong phase while walking).
+            Console.WriteLine();
+            Console.WriteLine("Walking shown as standing (share of walking samples), none / feet / self:");
+            string Shown(Cell c) => c == null ? "-" : (100 * GaitMetrics.Pool(c.All).WalkingAsStanding).ToString("F1", CultureInfo.InvariantCulture);
+            foreach (var clf in names)
+                Console.WriteLine($"  {clf}: " + string.Join("  ", styles.Where(st => Get(st, clf, "none") != null)
+                    .Select(st => $"{st} {Shown(Get(st, clf, "none"))}/{Shown(Get(st, clf, "feet"))}/{Shown(Get(st, clf, "self"))}")));
         }
     }
 }

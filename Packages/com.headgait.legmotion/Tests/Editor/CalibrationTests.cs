@@ -207,6 +207,99 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void TheLearnedModelsRefitToTheWearerAndKeepItThroughSaveAndLoad()
+        {
+            // A calm wearer's replayed calibration (head and two ankle streams): the SVM's channel gains and pair intercepts
+            // refitted on the walk's labelled windows classify the same wearer's other walk better, and the profile read
+            // back from disk predicts exactly as the one fitted.
+            var wearer = Wearer();
+            var walk = Walk(wearer);
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+            var profile = new CalibrationSession(Unlabelled(walk), left, right).Fit(models, "calm-wearer");
+            var svm = profile.AdjustmentFor(SvmClassifier.Kind);
+            Assert.That(svm, Is.Not.Null, "the SVM's refit pays on a calm wearer's walk");
+            Assert.That(svm.Changes, Is.True);
+            Assert.That(svm.BiasShift, Has.All.InRange(-LearnedAdjustment.MaxBiasShift, LearnedAdjustment.MaxBiasShift));
+
+            var other = WalkingStreamGenerator.Generate("other-walk", wearer, new StreamScript().Stand(2).Walk(20, Foot.Right).Stand(1).Walk(20, Foot.Left, -30).Stand(2), 911);
+            double Misclassified(GaitModels m) => ReplayEvaluator.Run(other, m.Create("svm", out _)).ClassifierMetrics.MisclassificationRate;
+            var withoutRefit = WearerProfile.Parse(profile.Serialize());
+            withoutRefit.LearnedAdjustments.Clear();
+            double refitted = Misclassified(profile.Apply(models)), scaledOnly = Misclassified(withoutRefit.Apply(models)), shippedOnly = Misclassified(models);
+            Assert.That(refitted, Is.LessThan(scaledOnly), $"refitted {refitted:P1}, scaled only {scaledOnly:P1}, shipped {shippedOnly:P1}");
+
+            string folder = Path.Combine(Path.GetTempPath(), "headgait-learned-profile-test-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var store = new WearerProfiles(folder);
+                store.Save(profile);
+                var loaded = store.ModelsFor("calm-wearer", models, out var back, out string note);
+                Assert.That(note, Is.Null);
+                Assert.That(back.AdjustmentFor(SvmClassifier.Kind).BiasShift, Is.EqualTo(svm.BiasShift));
+                var a = ReplayEvaluator.Run(other, profile.Apply(models).Create("svm", out _));
+                var b = ReplayEvaluator.Run(other, loaded.Create("svm", out _));
+                Assert.That(b.ClassifierMetrics.MisclassificationRate, Is.EqualTo(a.ClassifierMetrics.MisclassificationRate));
+
+                // A shift fitted against another SVM is left out, and the models say so.
+                var changed = ModelFile.Parse(models.Svm.ToBytes(), "other-svm");
+                var intercept = (double[])changed.Tensor("intercept", changed.ShapeOf("intercept")).Clone();
+                intercept[0] += 0.5;
+                changed.AddTensor("intercept", changed.ShapeOf("intercept"), intercept, true);
+                var otherModels = new GaitModels { Threshold = models.Threshold, Correlation = models.Correlation, Svm = changed };
+                var applied = back.Apply(otherModels);
+                Assert.That(applied.Problems, Has.Some.Contains("svm adjustment was fitted against another model"));
+                Assert.That(applied.Svm.HasTensor(SvmClassifier.WearerShiftTensor), Is.False, "the other model without the wearer's shifts");
+                Assert.That(back.Apply(models).Svm.HasTensor(SvmClassifier.WearerShiftTensor), Is.True);
+            }
+            finally
+            {
+                if (Directory.Exists(folder)) Directory.Delete(folder, true);
+            }
+        }
+
+        [Test]
+        public void ADamagedLearnedAdjustmentIsRefusedNamingTheFile()
+        {
+            var walk = Walk(Wearer());
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+            string text = new CalibrationSession(Unlabelled(walk), left, right).Fit(models, "calm-wearer").Serialize();
+            Assert.That(text, Does.Contain("learned.svm.bias_shift="));
+            string folder = Path.Combine(Path.GetTempPath(), "headgait-learned-damage-test-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(folder);
+            string path = Path.Combine(folder, "calm-wearer" + WearerProfile.Extension);
+            try
+            {
+                void Damaged(string from, string to, string expected)
+                {
+                    Assert.That(text, Does.Contain(from));
+                    File.WriteAllText(path, text.Replace(from, to));
+                    var e = Assert.Throws<FormatException>(() => WearerProfile.Load(path));
+                    Assert.That(e.Message, Does.Contain(path).And.Contain(expected));
+                }
+                Damaged("learned.svm.bias_shift=", "learned.svm.bias_shift=7,", "bias_shift");
+                Damaged("learned.svm.bias_shift=", "learned.svm.bias_shift=NaN,", "bias_shift");
+                Damaged("learned.svm.channel_gain=", "learned.svm.channel_gain=40,", "channel_gain");
+                Damaged("learned.svm.channel_gain=", "learned.svm.channel_gain=x,", "channel_gain");
+                Damaged("learned.svm.model=", "learned.svm.model=zz", "learned.svm.model");
+                Damaged("learned.svm.model=", "learned.svm.weights=1\nlearned.svm.model=", "learned.svm.weights");
+                Damaged("learned.svm.", "learned.rnn.", "no learned model 'rnn'");
+                Damaged(WearerProfile.Magic, WearerProfile.MagicV1, "v1 profile holds no learned adjustments");
+                File.WriteAllText(path, string.Join("\n", text.Split('\n').Where(l => !l.StartsWith("learned.svm.channel_gain", StringComparison.Ordinal))));
+                Assert.That(Assert.Throws<FormatException>(() => WearerProfile.Load(path)).Message, Does.Contain(path).And.Contain("lacks 'learned.svm.channel_gain'"));
+                // A profile of the first version (no learned block) still reads.
+                string v1 = string.Join("\n", text.Split('\n').Where(l => !l.StartsWith("learned.", StringComparison.Ordinal))).Replace(WearerProfile.Magic, WearerProfile.MagicV1);
+                File.WriteAllText(path, v1);
+                Assert.That(WearerProfile.Load(path).LearnedAdjustments, Is.Empty);
+            }
+            finally
+            {
+                Directory.Delete(folder, true);
+            }
+        }
+
+        [Test]
         public void ThePartsOfAProfileStayWithinTheirBounds()
         {
             var walk = Walk(Wearer());

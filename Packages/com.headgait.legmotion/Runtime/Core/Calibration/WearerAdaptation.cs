@@ -44,13 +44,28 @@ namespace HeadGait.Calibration
         /// 23.5 to 23.9 %), and the learned gate stays, as the sure stretches are where the wearer's steps were clearest.
         /// </summary>
         public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised
-            ? new AdaptationSettings { Threshold = false, LearnedGate = false }
+            ? new AdaptationSettings { Threshold = false, LearnedGate = false, LearnedRefit = false }
             : new AdaptationSettings();
 
         /// <summary>Steps at which THR's refitted values and the trained ones weigh the same (shrinks a short walk's fit towards training).</summary>
         public double ThresholdPriorSteps = 20;
         /// <summary>Scale the learned models' input towards the training walkers' bounce.</summary>
         public bool LearnedGain = true;
+        /// <summary>
+        /// Refit the learned models' channel gains and output biases on the walk's labelled windows (<see cref="LearnedAdaptation"/>;
+        /// ankle trackers only: self-supervised labels are COR's contacts, which the SVM would learn to follow).
+        /// </summary>
+        public bool LearnedRefit = true;
+        /// <summary>
+        /// With <see cref="LearnedRefit"/>, also search each input channel's gain: off, as a calm wearer's refitted channel
+        /// gains showed the same wearer's standing with head movement as walking more (BLSTM, generated: 2.45 to 2.47 %);
+        /// the output shifts cannot (they only pick the walking class), the gains move every decision.
+        /// </summary>
+        public bool LearnedChannelGains;
+        /// <summary>Most the refit moves one of the learned models' output biases (<see cref="LearnedAdaptation.DefaultShiftCap"/>; at most <see cref="LearnedAdjustment.MaxBiasShift"/>).</summary>
+        public double LearnedShiftCap = LearnedAdaptation.DefaultShiftCap;
+        /// <summary>L2 pull of the refit's output shifts towards none (<see cref="LearnedAdaptation.BiasPrior"/>).</summary>
+        public double LearnedShiftPrior = LearnedAdaptation.BiasPrior;
         /// <summary>
         /// Self-supervised: read COR's contacts with its walking gate open (<see cref="WearerAdaptation.SelfLabel"/>). The wearer
         /// was asked to walk, so the gate has nothing to decide, and a gate that refuses a calm walker's steps leaves nothing to
@@ -206,7 +221,28 @@ namespace HeadGait.Calibration
                     }
                 }
             }
+            if (a.LearnedRefit)
+            {
+                Refit(profile, models.Svm, f => new SvmClassifier(f, SvmClassifier.DefaultFilter()), walk, a);
+                Refit(profile, models.Blstm, f => new BlstmClassifier(f, new PhaseFilterSettings()), walk, a);
+            }
             return profile;
+        }
+
+        /// <summary>
+        /// Adds the learned model's refitted channel gains and output biases to the profile (<see cref="LearnedAdaptation"/>),
+        /// where they score the walk replayed through the whole classifier (time filter, gate) better than the profile's
+        /// scaling alone by the settings' <see cref="AdaptationSettings.AcceptMargin"/>.
+        /// </summary>
+        static void Refit(WearerProfile profile, ModelFile shipped, Func<ModelFile, LearnedClassifier> make, IReadOnlyList<Recording> walk, AdaptationSettings a)
+        {
+            if (shipped == null) return;
+            var scaled = profile.ScaledModel(shipped);
+            var adjustment = LearnedAdaptation.Fit(shipped, scaled, make, walk, a.LearnedChannelGains, a.LearnedShiftCap, a.LearnedShiftPrior);
+            if (adjustment == null || !adjustment.Changes) return;
+            string biasName = make(scaled).OutputBiasName;
+            var adjusted = adjustment.AppliedTo(scaled, biasName);
+            if (Pays(() => make(adjusted), () => make(scaled), walk, a.AcceptMargin)) profile.LearnedAdjustments.Add(adjustment);
         }
 
         /// <summary>Whether <paramref name="adapted"/> misclassifies the walk less than <paramref name="shipped"/> by at least <paramref name="margin"/> (NaN: always).</summary>

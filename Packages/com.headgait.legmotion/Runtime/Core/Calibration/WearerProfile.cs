@@ -7,14 +7,18 @@ using System.Text;
 namespace HeadGait.Calibration
 {
     /// <summary>
-    /// What a calibration walk fitted to one wearer, saved as a small text file (<c># headgait-wearer-profile v1</c>): THR's
-    /// settings and COR's templates in full (their own keys, prefixed <c>thr.</c> and <c>cor.</c>, read back by their own
-    /// parsers), how much further the walking gates open for this wearer, the learned models' input gain, and which models it
-    /// was fitted against. <see cref="Apply"/> gives adapted copies of the models; the models themselves are never changed.
+    /// What a calibration walk fitted to one wearer, saved as a small text file (<c># headgait-wearer-profile v2</c>; v1,
+    /// without the learned adjustments, still reads): THR's settings and COR's templates in full (their own keys, prefixed
+    /// <c>thr.</c> and <c>cor.</c>, read back by their own parsers), how much further the walking gates open for this
+    /// wearer, the learned models' input gain, each learned model's refitted channel gains and output biases
+    /// (<c>learned.svm.</c>, <c>learned.blstm.</c>, <see cref="LearnedAdjustment"/>), and which models it was fitted against. <see cref="Apply"/> gives adapted copies of the models; the models themselves are never changed.
     /// </summary>
     public sealed class WearerProfile
     {
-        public const string Magic = "# headgait-wearer-profile v1";
+        public const string Magic = "# headgait-wearer-profile v2";
+
+        /// <summary>The first version's magic line: read as ever (no learned adjustments).</summary>
+        public const string MagicV1 = "# headgait-wearer-profile v1";
         public const string Extension = ".profile.txt";
 
         /// <summary>Most a profile may open a walking gate (log-odds added to its bias): the guard against gestures stays.</summary>
@@ -41,6 +45,16 @@ namespace HeadGait.Calibration
         public double LearnedGateShift;
         /// <summary>Factor on the acceleration the SVM and BLSTM read (through their input scaling).</summary>
         public double LearnedGain = 1;
+        /// <summary>The SVM's and the BLSTM's refitted channel gains and output biases, each for the model it was fitted against (none: empty).</summary>
+        public List<LearnedAdjustment> LearnedAdjustments = new List<LearnedAdjustment>();
+
+        /// <summary>The adjustment for a learned model of <paramref name="kind"/>, or null.</summary>
+        public LearnedAdjustment AdjustmentFor(string kind)
+        {
+            foreach (var a in LearnedAdjustments)
+                if (a.Kind == kind) return a;
+            return null;
+        }
 
         /// <summary>Whether a wearer id makes a file name here and on every platform: 1-64 letters, digits, '-', '_' or '.', not starting with '.'.</summary>
         public static bool IsValidWearer(string wearer)
@@ -63,11 +77,29 @@ namespace HeadGait.Calibration
             {
                 Threshold = Threshold ?? models.Threshold,
                 Correlation = Correlation ?? models.Correlation,
-                Svm = models.Svm == null ? null : ScaledModel(models.Svm),
-                Blstm = models.Blstm == null ? null : ScaledModel(models.Blstm),
             };
             adapted.Problems.AddRange(models.Problems);
+            adapted.Svm = models.Svm == null ? null : AdaptedModel(models.Svm, SvmClassifier.Kind, "intercept", adapted.Problems);
+            adapted.Blstm = models.Blstm == null ? null : AdaptedModel(models.Blstm, BlstmClassifier.Kind, "fc_b", adapted.Problems);
             return adapted;
+        }
+
+        /// <summary>
+        /// The learned model scaled (<see cref="ScaledModel"/>) and, where the profile holds an adjustment fitted against this
+        /// very model, adjusted; an adjustment fitted against another model is left out with a line in <paramref name="problems"/>.
+        /// </summary>
+        ModelFile AdaptedModel(ModelFile model, string kind, string biasName, List<string> problems)
+        {
+            var scaled = ScaledModel(model);
+            var adjustment = AdjustmentFor(kind);
+            if (adjustment == null) return scaled;
+            string fingerprint = LearnedAdjustment.Fingerprint(model, biasName);
+            if (fingerprint != adjustment.Model)
+            {
+                problems.Add($"wearer '{Wearer}': the {kind} adjustment was fitted against another model ({adjustment.Model}, this is {fingerprint}); left out until the wearer calibrates again");
+                return scaled;
+            }
+            return adjustment.AppliedTo(scaled, biasName);
         }
 
         /// <summary>A copy of a learned model whose input scaling reads the acceleration times <see cref="LearnedGain"/> and whose gate is opened by <see cref="LearnedGateShift"/>.</summary>
@@ -134,10 +166,16 @@ namespace HeadGait.Calibration
             var sb = new StringBuilder(KeyValueText.Write(Magic, pairs, "a wearer's calibration (headgait calibrate); delete the file to reset the wearer to the shipped models"));
             if (Threshold != null) Embed(sb, ThrPrefix, Threshold.Serialize());
             if (Correlation != null) Embed(sb, CorPrefix, Correlation.Serialize());
+            foreach (var a in LearnedAdjustments)
+            {
+                sb.Append(LearnedPrefix).Append(a.Kind).Append(".model=").Append(a.Model).Append('\n');
+                sb.Append(LearnedPrefix).Append(a.Kind).Append(".channel_gain=").Append(LearnedAdjustment.Join(a.ChannelGain)).Append('\n');
+                sb.Append(LearnedPrefix).Append(a.Kind).Append(".bias_shift=").Append(LearnedAdjustment.Join(a.BiasShift)).Append('\n');
+            }
             return sb.ToString();
         }
 
-        const string ThrPrefix = "thr.", CorPrefix = "cor.";
+        const string ThrPrefix = "thr.", CorPrefix = "cor.", LearnedPrefix = "learned.";
 
         static void Embed(StringBuilder sb, string prefix, string document)
         {
@@ -170,10 +208,23 @@ namespace HeadGait.Calibration
             var thr = new StringBuilder(ThresholdSettings.Magic + "\n");
             var cor = new StringBuilder(CorrelationTemplate.Magic + "\n");
             bool hasThr = false, hasCor = false;
-            foreach (var raw in text.Replace("\r\n", "\n").Replace('\r', '\n').Split('\n'))
+            var learned = new Dictionary<string, string>();
+            string normalised = text.Replace("\r\n", "\n").Replace('\r', '\n');
+            if (normalised.Length > 0 && normalised[0] == '\uFEFF') normalised = normalised.Substring(1);
+            string magic = normalised.TrimStart().StartsWith(MagicV1 + "\n", StringComparison.Ordinal) ? MagicV1 : Magic;
+            foreach (var raw in normalised.Split('\n'))
             {
                 string line = raw.Trim();
-                if (line.StartsWith(ThrPrefix, StringComparison.Ordinal))
+                if (line.StartsWith(LearnedPrefix, StringComparison.Ordinal))
+                {
+                    if (magic == MagicV1) throw new FormatException($"{source}: '{line}': a v1 profile holds no learned adjustments");
+                    int eq = line.IndexOf('=');
+                    if (eq < 0) throw new FormatException($"{source}: line '{line}' is not key=value");
+                    string key = line.Substring(0, eq).Trim();
+                    if (learned.ContainsKey(key)) throw new FormatException($"{source}: '{key}' appears twice");
+                    learned[key] = line.Substring(eq + 1).Trim();
+                }
+                else if (line.StartsWith(ThrPrefix, StringComparison.Ordinal))
                 {
                     thr.Append(line.Substring(ThrPrefix.Length)).Append('\n');
                     hasThr = true;
@@ -185,7 +236,7 @@ namespace HeadGait.Calibration
                 }
                 else own.Append(raw).Append('\n');
             }
-            var kv = KeyValueText.Parse(own.ToString(), Magic, source);
+            var kv = KeyValueText.Parse(own.ToString(), magic, source);
             var p = new WearerProfile
             {
                 Wearer = kv.Need("wearer"),
@@ -206,8 +257,42 @@ namespace HeadGait.Calibration
             {
                 throw new FormatException($"{source}: {e.Message}");
             }
+            p.LearnedAdjustments = ParseLearned(learned, source);
             p.Validate(source);
             return p;
+        }
+
+        /// <summary>The <c>learned.KIND.</c> keys as adjustments: each kind needs its model, channel_gain and bias_shift, and nothing else.</summary>
+        static List<LearnedAdjustment> ParseLearned(Dictionary<string, string> learned, string source)
+        {
+            var byKind = new Dictionary<string, LearnedAdjustment>();
+            var order = new List<LearnedAdjustment>();
+            foreach (var pair in learned)
+            {
+                string rest = pair.Key.Substring(LearnedPrefix.Length);
+                int dot = rest.IndexOf('.');
+                string kind = dot < 0 ? rest : rest.Substring(0, dot), field = dot < 0 ? "" : rest.Substring(dot + 1);
+                if (kind != SvmClassifier.Kind && kind != BlstmClassifier.Kind) throw new FormatException($"{source}: '{pair.Key}': no learned model '{kind}' ({SvmClassifier.Kind} or {BlstmClassifier.Kind})");
+                if (!byKind.TryGetValue(kind, out var a))
+                {
+                    byKind[kind] = a = new LearnedAdjustment { Kind = kind, Model = null, ChannelGain = null, BiasShift = null };
+                    order.Add(a);
+                }
+                switch (field)
+                {
+                    case "model": a.Model = pair.Value; break;
+                    case "channel_gain": a.ChannelGain = LearnedAdjustment.Split(pair.Value, source, pair.Key); break;
+                    case "bias_shift": a.BiasShift = LearnedAdjustment.Split(pair.Value, source, pair.Key); break;
+                    default: throw new FormatException($"{source}: unknown key '{pair.Key}' (model, channel_gain, bias_shift)");
+                }
+            }
+            foreach (var a in order)
+            {
+                if (a.Model == null) throw new FormatException($"{source}: lacks '{LearnedPrefix}{a.Kind}.model'");
+                if (a.ChannelGain == null) throw new FormatException($"{source}: lacks '{LearnedPrefix}{a.Kind}.channel_gain'");
+                if (a.BiasShift == null) throw new FormatException($"{source}: lacks '{LearnedPrefix}{a.Kind}.bias_shift'");
+            }
+            return order;
         }
 
         void Validate(string source)
@@ -216,6 +301,12 @@ namespace HeadGait.Calibration
             if (Source != FromFootReferences && Source != SelfSupervised) throw new FormatException($"{source}: source '{Source}' is neither {FromFootReferences} nor {SelfSupervised}");
             if (!(LearnedGateShift >= 0 && LearnedGateShift <= MaxGateShift)) throw new FormatException($"{source}: learned_gate_shift {LearnedGateShift} is outside 0..{MaxGateShift}");
             if (!(LearnedGain >= MinLearnedGain && LearnedGain <= MaxLearnedGain)) throw new FormatException($"{source}: learned_gain {LearnedGain} is outside {MinLearnedGain}..{MaxLearnedGain}");
+            var kinds = new HashSet<string>();
+            foreach (var a in LearnedAdjustments ?? new List<LearnedAdjustment>())
+            {
+                a.Validate(source);
+                if (!kinds.Add(a.Kind)) throw new FormatException($"{source}: two learned adjustments for '{a.Kind}'");
+            }
         }
     }
 }

@@ -24,6 +24,8 @@ namespace HeadGait
         readonly Vector<float>[][] wIh, wHh;  // per direction: [input][gate vector], [hidden unit][gate vector]
         readonly Vector<float>[][] bias;      // per direction: [gate vector]
         readonly float[] fcW, fcB;            // [K x 2H], [K]
+        readonly double[] logProbabilities;   // [K], LastOutputs
+        readonly double[] wearerShift;        // [K] or null: a wearer's shifts of the class biases (WearerShiftTensor)
         readonly Vector<float>[] gates, cell;
         readonly float[] h, x, joined;
         // Without SIMD lanes (VectorMath.UseVectors): PyTorch's own layout, per direction, and scalar state.
@@ -71,6 +73,8 @@ namespace HeadGait
             plainCell = new float[hidden];
             fcW = ToFloat(model.Tensor("fc_w", classes, 2 * hidden));
             fcB = ToFloat(model.Tensor("fc_b", classes));
+            logProbabilities = new double[classes];
+            wearerShift = ReadWearerShift(model, classes);
             gates = new Vector<float>[gateVectors];
             cell = new Vector<float>[unitVectors];
             h = new float[unitVectors * lanes];
@@ -111,6 +115,19 @@ namespace HeadGait
             return r;
         }
 
+        public override string OutputBiasName => "fc_b";
+        public override bool PairwiseOutputs => false;
+
+        public override double[] LastOutputs
+        {
+            get
+            {
+                var p = LastScores;
+                for (int k = 0; k < p.Length; k++) logProbabilities[k] = Math.Log(Math.Max(p[k], 1e-12));
+                return logProbabilities;
+            }
+        }
+
         protected override void Score(double[] standardised, double[] probabilities)
         {
             for (int i = 0; i < x.Length; i++) x[i] = (float)standardised[i];
@@ -140,6 +157,17 @@ namespace HeadGait
                 sum += probabilities[k];
             }
             for (int k = 0; k < classes; k++) probabilities[k] /= sum;
+        }
+
+        /// <summary>The shifted logits' softmax: the probabilities times e^shift, normalised.</summary>
+        protected override bool WearerProbabilities(double[] classScores, double[] p)
+        {
+            if (wearerShift == null) return false;
+            double sum = 0;
+            for (int k = 0; k < classes; k++) sum += p[k] = classScores[k] * Math.Exp(wearerShift[k]);
+            if (!(sum > 0)) return false;
+            for (int k = 0; k < classes; k++) p[k] /= sum;
+            return true;
         }
 
         /// <summary>

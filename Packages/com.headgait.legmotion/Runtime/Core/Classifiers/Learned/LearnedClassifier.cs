@@ -26,6 +26,8 @@ namespace HeadGait
         readonly double[] probabilities;
         readonly double[] batchRow, batchRowScores;
         readonly PhaseSequenceFilter filter;
+        PhaseSequenceFilter wearerFilter;      // over the wearer's probabilities, made on their first window
+        readonly double[] wearerProbabilities;
         readonly CSharpNetwork network;
         readonly HeadTilt tilt = new HeadTilt();
         bool rhythmHolds;     // whether the head's rhythm held a walk at its last reading (PhaseFilterSettings.HoldOnRhythm)
@@ -78,6 +80,7 @@ namespace HeadGait
             features = new double[Features.Width];
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];
+            wearerProbabilities = new double[Segments.ClassCount];
             batchRow = new double[Features.Width];
             batchRowScores = new double[Segments.ClassCount];
             filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
@@ -147,6 +150,48 @@ namespace HeadGait
             }
         }
 
+        /// <summary>
+        /// Optional tensor of a wearer's calibration (<see cref="HeadGait.Calibration.LearnedAdjustment"/>): shifts of the
+        /// output biases (the shape of <see cref="OutputBiasName"/>'s), through <see cref="WearerProbabilities"/>.
+        /// </summary>
+        public const string WearerShiftTensor = "wearer_output_shift";
+
+        /// <summary>Largest |shift| of an output bias a wearer's calibration may make (SVM: margins; BLSTM: log-odds of a class).</summary>
+        public const double MaxWearerShift = 3.0;
+
+        /// <summary>The model's <see cref="WearerShiftTensor"/> (<paramref name="count"/> values within +-<see cref="MaxWearerShift"/>), or null without one.</summary>
+        protected static double[] ReadWearerShift(ModelFile model, int count)
+        {
+            if (!model.HasTensor(WearerShiftTensor)) return null;
+            var shift = model.Tensor(WearerShiftTensor, count);
+            foreach (var v in shift)
+                if (!(Math.Abs(v) <= MaxWearerShift)) throw new ModelFormatException(model.Source, $"{WearerShiftTensor} holds {v:G4}, outside -{MaxWearerShift}..{MaxWearerShift}");
+            return shift;
+        }
+
+        /// <summary>
+        /// The probabilities with a wearer's output shifts (<see cref="WearerShiftTensor"/>) from the window's
+        /// <paramref name="classScores"/>, into <paramref name="p"/>; false where the model holds none (or the scores came
+        /// from a runtime that does not carry them). They choose only which walking class is shown: whether the wearer walks
+        /// is the shipped outputs' decision (<see cref="Decide"/>).
+        /// </summary>
+        protected virtual bool WearerProbabilities(double[] classScores, double[] p) => false;
+
+        /// <summary>
+        /// The tensor holding the last layer's biases, which a wearer's calibration may shift (<see cref="HeadGait.Calibration.LearnedAdaptation"/>):
+        /// the SVM's pair intercepts, the BLSTM's class biases.
+        /// </summary>
+        public abstract string OutputBiasName { get; }
+
+        /// <summary>Whether the output biases are one-versus-one pairs' (the SVM's, in LIBSVM's order) rather than one per class.</summary>
+        public abstract bool PairwiseOutputs { get; }
+
+        /// <summary>
+        /// What the output biases add to for the last window scored (<see cref="ScoreFeatures"/>): the SVM's pair decision
+        /// values, the BLSTM's log-probabilities (its class biases shift them up to a constant the softmax drops).
+        /// </summary>
+        public abstract double[] LastOutputs { get; }
+
         /// <summary>The scores as probabilities over the classes (the BLSTM's already are).</summary>
         protected virtual void ToProbabilities(double[] classScores, double[] p) => Array.Copy(classScores, p, p.Length);
 
@@ -156,6 +201,7 @@ namespace HeadGait
         public virtual void Reset()
         {
             filter?.Reset();
+            wearerFilter?.Reset();
             lastTime = double.NaN;
             lastClass = -1;
             lastContactTime = double.NaN;
@@ -252,6 +298,7 @@ namespace HeadGait
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange)
         {
             ToProbabilities(scores, probabilities);
+            bool wearer = WearerProbabilities(scores, wearerProbabilities);
             bool bending = Bending(tiltChange, now);
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
@@ -259,26 +306,9 @@ namespace HeadGait
             // While the head's rhythm holds a walk in progress, the model decides as if the gate had passed the window;
             // the refusals still count, so one the rhythm no longer holds ends the walk at once.
             bool heldByRhythm = gate == GateVerdict.RefusesInStepRhythm && filter != null && filter.Settings.HoldOnRhythm && WasWalking;
-            if (refused && !heldByRhythm)
-            {
-                bool ridden = filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
-                double keep = ridden ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
-                for (int k = 0; k < probabilities.Length; k++)
-                {
-                    if (k == Segments.StandingClass) continue;
-                    probabilities[k] *= keep;
-                    walking += probabilities[k];
-                }
-                probabilities[Segments.StandingClass] = 1 - walking;
-            }
-            else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
-            {
-                probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
-                double sum = 0;
-                for (int k = 0; k < probabilities.Length; k++) sum += probabilities[k];
-                if (sum > 0)
-                    for (int k = 0; k < probabilities.Length; k++) probabilities[k] /= sum;
-            }
+            bool ridden = refused && !heldByRhythm && filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
+            ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate);
+            if (wearer) ApplyGate(wearerProbabilities, refused && !heldByRhythm, ridden, gate);
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
             lastTime = now;
             var p = probabilities;
@@ -287,12 +317,29 @@ namespace HeadGait
             {
                 best = filter.Update(probabilities, dt, stepPeriod);
                 p = filter.Belief;
+                if (wearer)
+                {
+                    // A second filter over the wearer's probabilities picks the walking class; the shipped one alone
+                    // decides whether the wearer walks, so a calibration cannot make gestures or bows walk.
+                    if (wearerFilter == null) wearerFilter = new PhaseSequenceFilter(Segments, filter.Settings);
+                    wearerFilter.Update(wearerProbabilities, dt, stepPeriod);
+                    if (best != Segments.StandingClass)
+                    {
+                        p = wearerFilter.Belief;
+                        best = MostLikelyWalking(p);
+                    }
+                }
             }
             else
             {
                 best = 0;
                 for (int k = 1; k < p.Length; k++)
                     if (p[k] > p[best]) best = k;
+                if (wearer && best != Segments.StandingClass)
+                {
+                    p = wearerProbabilities;
+                    best = MostLikelyWalking(p);
+                }
             }
             if (filter != null && WasWalking && best != Segments.StandingClass)
                 best = Steady(best);
@@ -311,6 +358,43 @@ namespace HeadGait
             double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
             return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
+        }
+
+        /// <summary>
+        /// What the gate's verdict does to a window's probabilities: a refusal leaves walking
+        /// <see cref="PhaseFilterSettings.RefusedWalkingShare"/> of its probability where the walk is ridden through, none
+        /// otherwise; a sure pass during a walk weighs standing down (<see cref="PhaseFilterSettings.SureWalkingStandingWeight"/>).
+        /// </summary>
+        void ApplyGate(double[] probabilities, bool refused, bool ridden, GateVerdict gate)
+        {
+            if (refused)
+            {
+                double keep = ridden ? filter.Settings.RefusedWalkingShare : 0, walking = 0;
+                for (int k = 0; k < probabilities.Length; k++)
+                {
+                    if (k == Segments.StandingClass) continue;
+                    probabilities[k] *= keep;
+                    walking += probabilities[k];
+                }
+                probabilities[Segments.StandingClass] = 1 - walking;
+            }
+            else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
+            {
+                probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
+                double sum = 0;
+                for (int k = 0; k < probabilities.Length; k++) sum += probabilities[k];
+                if (sum > 0)
+                    for (int k = 0; k < probabilities.Length; k++) probabilities[k] /= sum;
+            }
+        }
+
+        /// <summary>The walking class of highest probability (ties to the lower class).</summary>
+        int MostLikelyWalking(double[] p)
+        {
+            int best = -1;
+            for (int k = 0; k < p.Length; k++)
+                if (k != Segments.StandingClass && (best < 0 || p[k] > p[best])) best = k;
+            return best;
         }
 
         /// <summary>

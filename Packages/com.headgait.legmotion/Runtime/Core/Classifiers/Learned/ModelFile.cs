@@ -84,6 +84,8 @@ namespace HeadGait
             return t.data;
         }
 
+        public bool HasTensor(string name) => tensors.ContainsKey(name);
+
         /// <summary>Dimensions of a tensor as stored (to read sizes such as the hidden width before checking the rest).</summary>
         public int[] ShapeOf(string name)
             => tensors.TryGetValue(name, out var t) ? (int[])t.shape.Clone() : throw new ModelFormatException(Source, $"lacks tensor '{name}'");

@@ -27,6 +27,7 @@ namespace HeadGait
 
         readonly double gamma, coef0;
         readonly double[] intercept;       // [K(K-1)/2]
+        readonly double[] wearerShift;     // [K(K-1)/2] or null: a wearer's shifts of the intercepts (WearerShiftTensor)
         readonly double[] supportVectors;  // [nSV x D], the model's own double values: for pairs too close to call in float32
         readonly double[] dualCoef;        // [(K-1) x nSV]
         readonly int[] start, count;       // each class's support vectors
@@ -80,6 +81,7 @@ namespace HeadGait
             supportVectors = model.Tensor("support_vectors", vectors, width);
             dualCoef = model.Tensor("dual_coef", classes - 1, vectors);
             intercept = model.Tensor("intercept", classes * (classes - 1) / 2);
+            wearerShift = ReadWearerShift(model, intercept.Length);
             int lanes = Vector<float>.Count;
             firstBlock = new int[classes + 1];
             for (int k = 0; k < classes; k++) firstBlock[k + 1] = firstBlock[k] + (count[k] + lanes - 1) / lanes;
@@ -120,6 +122,17 @@ namespace HeadGait
         /// </summary>
         protected override void ToProbabilities(double[] votes, double[] p)
         {
+            if (wearerShift == null)
+            {
+                Softmax(votes, p);
+                return;
+            }
+            for (int k = 0; k < votes.Length; k++) p[k] = Math.Floor(votes[k]); // the shipped votes, without the wearer's (ShiftForWearer)
+            Softmax(p, p);
+        }
+
+        static void Softmax(double[] votes, double[] p)
+        {
             double max = double.NegativeInfinity, sum = 0;
             foreach (var v in votes) max = Math.Max(max, v);
             for (int k = 0; k < votes.Length; k++) sum += p[k] = Math.Exp(votes[k] - max);
@@ -131,6 +144,10 @@ namespace HeadGait
 
         /// <summary>Pairwise decision values of the last window, in LIBSVM's order (0 vs 1, 0 vs 2, ..., K-2 vs K-1).</summary>
         public double[] LastDecision => decision;
+
+        public override string OutputBiasName => "intercept";
+        public override bool PairwiseOutputs => true;
+        public override double[] LastOutputs => decision;
 
         protected override void Score(double[] standardised, double[] votes) => ScoreBatch(standardised, 1, votes);
 
@@ -315,7 +332,35 @@ namespace HeadGait
                         pair++;
                     }
                 }
+                ShiftForWearer(votes, o);
             }
+        }
+
+        /// <summary>
+        /// With a wearer's shifts: the votes the shifted intercepts cast ride in the window's scores as a fraction
+        /// (votes + shifted votes / <see cref="ShiftedVoteScale"/>; votes are whole and below the scale), so that they travel
+        /// with the window through a batch; <see cref="ToProbabilities"/> reads the whole votes, <see cref="WearerProbabilities"/> the fraction.
+        /// </summary>
+        void ShiftForWearer(double[] votes, int o)
+        {
+            if (wearerShift == null) return;
+            int pair = 0;
+            for (int i = 0; i < classes; i++)
+                for (int j = i + 1; j < classes; j++, pair++)
+                    votes[o + (decision[pair] + wearerShift[pair] > 0 ? i : j)] += 1.0 / ShiftedVoteScale;
+        }
+
+        /// <summary>Shifted votes ride below the whole votes divided by this (a power of two: exact in binary; more than any count of votes).</summary>
+        const double ShiftedVoteScale = 1024;
+
+        protected override bool WearerProbabilities(double[] classScores, double[] p)
+        {
+            if (wearerShift == null) return false;
+            double any = 0;
+            for (int k = 0; k < classScores.Length; k++) any += p[k] = (classScores[k] - Math.Floor(classScores[k])) * ShiftedVoteScale;
+            if (!(any > 0)) return false; // scores from a runtime without the shifts (plain votes)
+            Softmax(p, p);
+            return true;
         }
 
         /// <summary>
@@ -350,6 +395,7 @@ namespace HeadGait
                     else votes[vo + j]++;
                 }
             }
+            ShiftForWearer(votes, vo);
         }
 
         /// <summary>Pair (i, j)'s decision value in double, over the two classes' support vectors, as LIBSVM computes it.</summary>
