@@ -251,6 +251,8 @@ namespace HeadGait.Tests
                 Assert.That(applied.Problems, Has.Some.Contains("svm adjustment was fitted against another model"));
                 Assert.That(applied.Svm.HasTensor(SvmClassifier.WearerShiftTensor), Is.False, "the other model without the wearer's shifts");
                 Assert.That(back.Apply(models).Svm.HasTensor(SvmClassifier.WearerShiftTensor), Is.True);
+                Assert.That(((LearnedClassifier)loaded.Create("svm", out _)).WearerShiftNeedsNetwork, Is.True, "Sentis votes cannot carry the shifts: the component warns");
+                Assert.That(((LearnedClassifier)models.Create("svm", out _)).WearerShiftNeedsNetwork, Is.False);
             }
             finally
             {

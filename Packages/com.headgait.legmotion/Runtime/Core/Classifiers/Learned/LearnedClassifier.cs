@@ -178,6 +178,13 @@ namespace HeadGait
         protected virtual bool WearerProbabilities(double[] classScores, double[] p) => false;
 
         /// <summary>
+        /// Whether the wearer's output shifts need the C# <see cref="Network"/>'s scores: the SVM's shifts act on its pair
+        /// decision values, which another evaluator (the ONNX export in Sentis: votes only) does not give, so with one the
+        /// SVM shows the shipped model's classes. Callers that set <see cref="Evaluator"/> warn the user.
+        /// </summary>
+        public virtual bool WearerShiftNeedsNetwork => false;
+
+        /// <summary>
         /// The tensor holding the last layer's biases, which a wearer's calibration may shift (<see cref="HeadGait.Calibration.LearnedAdaptation"/>):
         /// the SVM's pair intercepts, the BLSTM's class biases.
         /// </summary>

@@ -353,6 +353,8 @@ namespace HeadGait
         /// <summary>Shifted votes ride below the whole votes divided by this (a power of two: exact in binary; more than any count of votes).</summary>
         const double ShiftedVoteScale = 1024;
 
+        public override bool WearerShiftNeedsNetwork => wearerShift != null;
+
         protected override bool WearerProbabilities(double[] classScores, double[] p)
         {
             if (wearerShift == null) return false;
