@@ -25,7 +25,7 @@ namespace HeadGait.Cli
             var cv = new Option<string>("--cv") { Description = "person: leave one person out: each person's recordings are judged by walking gates trained on the --train recordings and the other people's recordings in --data (as `train --real` trains them); the rest of each model as shipped" };
             var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
             var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (defaults 0.15 s, 0, 0: any time); off as shipped" };
-            var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, late start and non-walking shown as walking, against the rhythm the signal itself shows.")
+            var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, the start of bouts met standing and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
                 data, classifier, models, perPerson, cv, train, firstStep,
             };
@@ -165,7 +165,6 @@ namespace HeadGait.Cli
                 ("steps shown / the signal's cadence (median)", x => Num(x.CadenceRatio, "F2")),
                 ("consecutive steps alternating feet", x => Pct(x.Alternating)),
                 ("walking fragments per walking file (median)", x => Num(x.Fragments, "F0")),
-                ("late start, walking files / TUG bouts (median, s)", x => $"{Num(x.StartDelay, "F2")} / {Num(x.TugStartDelay, "F2")}"),
                 ("bouts met standing, walking files / TUG", x => $"{x.WalkingStarts.Count} / {x.TugStarts.Count}"),
                 ("  their delay, median / 90th pct (s)", x => $"{Num(x.WalkingStarts.Median, "F2")}/{Num(x.WalkingStarts.Ninetieth, "F2")} | {Num(x.TugStarts.Median, "F2")}/{Num(x.TugStarts.Ninetieth, "F2")}"),
                 ($"  started within {RealWorldSummary.StandingStarts.Within:0.0} s", x => $"{Pct(x.WalkingStarts.ShareWithin)} / {Pct(x.TugStarts.ShareWithin)}"),
@@ -185,9 +184,9 @@ namespace HeadGait.Cli
             if (still.Length > 0) Console.WriteLine($"The signal's rhythm in the still activities (should be near 0): {still}.");
             Console.WriteLine("Walking time: where the signal itself shows a regular step rhythm (SMV repeating one step and one stride later, the head");
             Console.WriteLine("swaying to the other side each step; 4 s around each moment, edges at the first and last step); cadence: its step period.");
-            Console.WriteLine("Steps shown count the avatar's foot contacts while both walk. Late start: from a bout's first step to the avatar walking");
-            Console.WriteLine("(0 where the avatar still walks from before). Bouts met standing: bouts after >= 1 s without walking (or the recording's");
-            Console.WriteLine("start) at whose first step the avatar stands; delay to the avatar leaving Standing (the bout's length when it never does).");
+            Console.WriteLine("Steps shown count the avatar's foot contacts while both walk. Bouts met standing: bouts after >= 1 s without walking (or");
+            Console.WriteLine($"the recording's start) with the avatar standing {RealWorldScore.EarlyStart:0.0} s before the first step; delay from the first step to the");
+            Console.WriteLine($"avatar leaving Standing (0 within those {RealWorldScore.EarlyStart:0.0} s before it; the bout's length when it never does).");
             Console.WriteLine("A bout's first step is a smoothed edge, not a contact: the first moment whose next 0.5 s of SMV spreads at half the");
             Console.WriteLine("bout's typical level (RhythmReference), i.e. the first step's rise; THR's first threshold crossing of a bout on the");
             Console.WriteLine("glasses comes a median 0.16 s before it (10th-90th percentile 0.27 s before to 0.44 s after).");
@@ -195,12 +194,12 @@ namespace HeadGait.Cli
 
         static void WriteCsv(string path, List<RealWorldScore> scores)
         {
-            var lines = new List<string> { "recording,person,activity,classifier,seconds,signal_walking_s,signal_cadence_spm,avatar_walking_of_signal,classifier_walking_of_signal,avatar_walking_s,classifier_walking_s,steps_shown,signal_steps,cadence_ratio,consecutive_steps,alternating_steps,fragments,signal_bouts,start_delays_s,standing_start_delays_s" };
+            var lines = new List<string> { "recording,person,activity,classifier,seconds,signal_walking_s,signal_cadence_spm,avatar_walking_of_signal,classifier_walking_of_signal,avatar_walking_s,classifier_walking_s,steps_shown,signal_steps,cadence_ratio,consecutive_steps,alternating_steps,fragments,signal_bouts,standing_start_delays_s" };
             foreach (var x in scores)
                 lines.Add(string.Join(",", Csv(x.Recording), Csv(x.Person), x.Activity, x.Classifier,
                     F(x.Seconds), F(x.ReferenceWalkingSeconds), F(x.SignalCadence), F(x.AvatarWalkingShare), F(x.ClassifierWalkingShare),
                     F(x.AvatarWalkingSeconds), F(x.ClassifierWalkingSeconds), x.Contacts, F(x.SignalSteps), F(x.CadenceRatio),
-                    x.ConsecutiveContacts, x.AlternatingContacts, x.Fragments, x.ReferenceBouts, string.Join(" ", x.StartDelays.Select(F)), string.Join(" ", x.StandingStartDelays.Select(F))));
+                    x.ConsecutiveContacts, x.AlternatingContacts, x.Fragments, x.ReferenceBouts, string.Join(" ", x.StandingStartDelays.Select(F))));
             AtomicFile.WriteAllText(path, string.Join("\n", lines) + "\n");
             Console.WriteLine($"Wrote {scores.Count} rows to {path}");
         }

@@ -94,8 +94,8 @@ namespace HeadGait.Tests
             Assert.That(score.CadenceRatio, Is.EqualTo(1).Within(0.05));
             Assert.That((double)score.AlternatingContacts / score.ConsecutiveContacts, Is.GreaterThan(0.99));
             Assert.That(score.Fragments, Is.EqualTo(1));
-            Assert.That(score.StartDelays, Has.Count.EqualTo(1));
-            Assert.That(score.StartDelays[0], Is.LessThan(0.6));
+            Assert.That(score.StandingStartDelays, Has.Count.EqualTo(1));
+            Assert.That(score.StandingStartDelays[0], Is.LessThan(0.6));
         }
 
         [TestCase(2.0)]
@@ -194,11 +194,21 @@ namespace HeadGait.Tests
             var (rec, reference, p, f) = TwoBouts(22, (r, t) => t >= r.Bouts[0].Start + 0.2 && t < r.Bouts[r.Bouts.Count - 1].End);
             Assert.That(reference.Bouts.Count, Is.EqualTo(2), string.Join("; ", reference.Bouts));
             var score = RealWorldScore.Of(rec, reference, "carried", p, f);
-            // The old late start counts the second bout as started at once; met standing, only the first counts.
-            Assert.That(score.StartDelays, Has.Count.EqualTo(2));
-            Assert.That(score.StartDelays[1], Is.EqualTo(0));
+            // The second bout is not counted as started at once: only the first is met standing.
             Assert.That(score.StandingStartDelays, Has.Count.EqualTo(1));
             Assert.That(score.StandingStartDelays[0], Is.EqualTo(0.2).Within(0.02));
+        }
+
+        [Test]
+        public void AStartOnTheFirstStepJustBeforeItsDatedEdgeCountsAsOnTime()
+        {
+            // The bout's date is a smoothed edge after the first step's rise: an avatar walking from 0.2 s before it started
+            // on that step (delay 0), and one from 0.6 s before was already walking (left out).
+            var (rec, reference, p, f) = TwoBouts(24, (r, t) => r.Bouts.Any(b => t >= b.Start - 0.2 && t < b.End));
+            var early = RealWorldScore.Of(rec, reference, "early", p, f);
+            Assert.That(early.StandingStartDelays, Is.EqualTo(new[] { 0.0, 0.0 }));
+            var (rec2, reference2, p2, f2) = TwoBouts(24, (r, t) => r.Bouts.Any(b => t >= b.Start - 0.6 && t < b.End));
+            Assert.That(RealWorldScore.Of(rec2, reference2, "carried", p2, f2).StandingStartDelays, Is.Empty);
         }
 
         [Test]

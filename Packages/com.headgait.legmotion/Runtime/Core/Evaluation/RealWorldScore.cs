@@ -64,16 +64,11 @@ namespace HeadGait
         /// <summary>The signal's walking bouts.</summary>
         public int ReferenceBouts;
         /// <summary>
-        /// Per bout after at least <see cref="StillBeforeBout"/> s of the signal without walking: how long after its first
-        /// step the avatar walks (s; 0 when it already walks then, as when a hold carries it from the bout before; the
-        /// bout's length when never). See <see cref="StandingStartDelays"/> for the bouts the avatar meets standing.
-        /// </summary>
-        public List<double> StartDelays = new List<double>();
-        /// <summary>
         /// Per bout that meets a standing avatar (after at least <see cref="StillBeforeBout"/> s of the signal without walking,
-        /// or with the recording, and the avatar Standing at the bout's first step): how long after that step the avatar
-        /// leaves Standing (s; the bout's length when never). Unlike <see cref="StartDelays"/>, a bout the avatar walks into
-        /// from the one before (a hold carrying it) is not counted as started at once: it is left out.
+        /// or with the recording, and the avatar Standing <see cref="EarlyStart"/> s before the bout's first step): how long
+        /// after that step the avatar leaves Standing (s; 0 when it leaves within <see cref="EarlyStart"/> before it; the
+        /// bout's length when never). A bout the avatar walks into from the one before (a hold carrying it) is left out, not
+        /// counted as started at once.
         /// </summary>
         public List<double> StandingStartDelays = new List<double>();
         /// <summary>The same for the classifier: bouts at whose first step it predicts standing, and how long until it predicts walking (s).</summary>
@@ -81,6 +76,12 @@ namespace HeadGait
 
         /// <summary>Signal time without walking (s) before a bout for its start to count as a start.</summary>
         public const double StillBeforeBout = 1.0;
+        /// <summary>
+        /// How long before a bout's dated first step a start still counts as on time (s): the date is a smoothed edge
+        /// (<see cref="RhythmReference"/>), and the first step's threshold crossing comes up to 0.27 s before it on the
+        /// glasses (10th percentile), so a start on the first step itself is not taken for a walk carried from before.
+        /// </summary>
+        public const double EarlyStart = 0.3;
         /// <summary>The signal's median cadence (steps/min; NaN without walking).</summary>
         public double SignalCadence = double.NaN;
 
@@ -158,7 +159,7 @@ namespace HeadGait
                 previousFoot = c.Foot;
             }
 
-            // Late start: each bout that starts after at least a second without walking (or with the recording).
+            // Start delay: each bout that starts after at least a second without walking (or with the recording).
             double first = frames[0].Time;
             for (int b = 0; b < reference.Bouts.Count; b++)
             {
@@ -169,33 +170,22 @@ namespace HeadGait
                 if (standing.HasValue) score.StandingStartDelays.Add(standing.Value);
                 double? predicted = StandingStartDelay(times, i => predictions[i].IsWalking, start, end);
                 if (predicted.HasValue) score.ClassifierStandingStartDelays.Add(predicted.Value);
-                double delay = end - start;
-                for (int i = 0; i < n; i++)
-                {
-                    if (times[i] < start - 0.5) continue;
-                    if (times[i] >= end) break;
-                    if (frames[i].State != LocomotionState.Standing)
-                    {
-                        delay = Math.Max(0, times[i] - start);
-                        break;
-                    }
-                }
-                score.StartDelays.Add(delay);
             }
             return score;
         }
 
         /// <summary>
-        /// From a bout's first step (<paramref name="start"/>) to the first frame <paramref name="walks"/> (s; the bout's
-        /// length when none does); null when the frame holding at the first step already walks, or no frame holds there.
+        /// From a bout's first step (<paramref name="start"/>) to the first frame <paramref name="walks"/> (s; 0 for one
+        /// within <see cref="EarlyStart"/> before it; the bout's length when none does); null when the frame holding
+        /// <see cref="EarlyStart"/> before the first step already walks, or no frame holds there.
         /// </summary>
         static double? StandingStartDelay(double[] times, Func<int, bool> walks, double start, double end)
         {
             int at = -1;
-            for (int i = 0; i < times.Length && times[i] <= start; i++) at = i;
+            for (int i = 0; i < times.Length && times[i] <= start - EarlyStart; i++) at = i;
             if (at < 0 || walks(at)) return null;
             for (int i = at + 1; i < times.Length && times[i] < end; i++)
-                if (walks(i)) return times[i] - start;
+                if (walks(i)) return Math.Max(0, times[i] - start);
             return end - start;
         }
     }

@@ -8,7 +8,7 @@ namespace HeadGait
     /// One classifier's scores over a set of unlabelled real recordings (<see cref="RealWorldScore"/>), as issue 31's
     /// real-sensor table reports them: walking files' walking time shown as walking (pooled; per person, median and worst
     /// tenth), steps shown per step of the signal (median over walking files), consecutive steps alternating feet (pooled),
-    /// walking fragments per walking file (median) beside the signal's own bouts, late start, the still activities shown as
+    /// walking fragments per walking file (median) beside the signal's own bouts, the start of bouts met standing, the still activities shown as
     /// walking, and timed up-and-go. NaN where the recordings hold nothing to measure.
     /// </summary>
     public sealed class RealWorldSummary
@@ -24,8 +24,6 @@ namespace HeadGait
         public double CadenceRatio = double.NaN;
         public double Alternating = double.NaN;
         public double Fragments = double.NaN, ReferenceBouts = double.NaN;
-        /// <summary>Median late start of the walking files' bouts and of the timed up-and-go's bouts (s).</summary>
-        public double StartDelay = double.NaN, TugStartDelay = double.NaN;
         /// <summary>Bouts met by a standing avatar (<see cref="RealWorldScore.StandingStartDelays"/>), walking files and TUG.</summary>
         public StandingStarts WalkingStarts = StandingStarts.Of(Array.Empty<double>()), TugStarts = StandingStarts.Of(Array.Empty<double>());
         /// <summary>The classifier's own (<see cref="RealWorldScore.ClassifierStandingStartDelays"/>), walking files.</summary>
@@ -70,7 +68,6 @@ namespace HeadGait
             if (consecutive > 0) s.Alternating = (double)walking.Sum(x => x.AlternatingContacts) / consecutive;
             s.Fragments = GaitMetrics.Median(walking.Select(x => (double)x.Fragments).ToList());
             s.ReferenceBouts = GaitMetrics.Median(walking.Select(x => (double)x.ReferenceBouts).ToList());
-            s.StartDelay = GaitMetrics.Median(walking.SelectMany(x => x.StartDelays).ToList());
             s.WalkingStarts = StandingStarts.Of(walking.SelectMany(x => x.StandingStartDelays));
             s.ClassifierStarts = StandingStarts.Of(walking.SelectMany(x => x.ClassifierStandingStartDelays));
             double seconds = walking.Sum(x => x.Seconds);
@@ -91,7 +88,6 @@ namespace HeadGait
                 s.TugReference = tugRef / tugSeconds;
             }
             if (tugRef > 0) s.TugAvatarOfReference = tug.Sum(x => x.AvatarWalkingInReference) / tugRef;
-            s.TugStartDelay = GaitMetrics.Median(tug.SelectMany(x => x.StartDelays).ToList());
             s.TugStarts = StandingStarts.Of(tug.SelectMany(x => x.StandingStartDelays));
             return s;
         }
