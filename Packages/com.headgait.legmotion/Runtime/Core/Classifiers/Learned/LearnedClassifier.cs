@@ -248,11 +248,14 @@ namespace HeadGait
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
+        public double DebugRawStanding; public GateVerdict DebugGate; public bool DebugBending, DebugWasWalking; // DEBUG
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange)
         {
             ToProbabilities(scores, probabilities);
+            DebugRawStanding = probabilities[Segments.StandingClass]; DebugGate = gate; DebugWasWalking = WasWalking;
             bool bending = Bending(tiltChange, now);
+            DebugBending = bending;
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
