@@ -30,10 +30,12 @@ namespace HeadGait
         readonly HeadTilt tilt = new HeadTilt();
         bool rhythmHolds;     // whether the head's rhythm held a walk at its last reading (PhaseFilterSettings.HoldOnRhythm)
         int rhythmCountdown;  // windows until the next reading
+        double rhythmPeriod;  // the step period the head's rhythm showed at its last reading; 0 when it showed none
         ILearnedEvaluator evaluator;
         int lastClass = -1;
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
+        double lastPosition;  // stride position of the last walking prediction
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
@@ -230,7 +232,9 @@ namespace HeadGait
         {
             if (filter == null || !filter.Settings.HoldOnRhythm || rhythmCountdown-- > 0) return;
             rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
-            rhythmHolds = StepRhythm.Of(window, Gate.LevelTolerance).HoldsWalk;
+            var rhythm = StepRhythm.Of(window, Gate.LevelTolerance);
+            rhythmHolds = rhythm.HoldsWalk;
+            rhythmPeriod = rhythm.ShowsStepPeriod ? rhythm.Period : 0;
         }
 
         /// <summary>
@@ -297,8 +301,19 @@ namespace HeadGait
                 for (int k = 1; k < p.Length; k++)
                     if (p[k] > p[best]) best = k;
             }
+            bool carried = false;
+            double carriedPosition = 0;
             if (filter != null && WasWalking && best != Segments.StandingClass)
-                best = Steady(best);
+            {
+                int steady = Steady(best, out bool swapped);
+                if (swapped && filter.Settings.SwapCarriesOn)
+                {
+                    carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * (rhythmPeriod > 0 ? rhythmPeriod : stepPeriod)));
+                    best = SegmentAt(carriedPosition);
+                    carried = true;
+                }
+                else best = steady;
+            }
             if (best == Segments.StandingClass)
             {
                 lastClass = best;
@@ -312,7 +327,8 @@ namespace HeadGait
             int n = Segments.Count;
             double before = p[(best + n - 1) % n], after = p[(best + 1) % n];
             double lean = (after - before) / (p[best] + before + after + 1e-12);
-            double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
+            double s = carried ? carriedPosition : Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
+            lastPosition = PhaseMap.Wrap(s);
             return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
 
@@ -333,14 +349,22 @@ namespace HeadGait
         /// The class to show after <paramref name="best"/> while walking: the last one is held when best is a little behind
         /// it or across the stride from it (<see cref="PhaseFilterSettings.HoldBackSegments"/>, <see cref="PhaseFilterSettings.SwapSegments"/>).
         /// </summary>
-        int Steady(int best)
+        int Steady(int best, out bool swapped)
         {
             int n = Segments.Count;
             var filterSettings = filter.Settings;
             int back = (lastClass - best + n) % n, ahead = (best - lastClass + n) % n;
             bool behind = back >= 1 && back <= filterSettings.HoldBackSegments;
-            bool swapped = ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;
+            swapped = !behind && ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;
             return behind || swapped ? lastClass : best;
+        }
+
+        /// <summary>The stride segment holding stride position x.</summary>
+        int SegmentAt(double x)
+        {
+            for (int k = 0; k < Segments.Count; k++)
+                if (PhaseMap.Wrap(x - Segments.Start(k)) < Segments.Length(k)) return k;
+            return 0;
         }
 
         /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>

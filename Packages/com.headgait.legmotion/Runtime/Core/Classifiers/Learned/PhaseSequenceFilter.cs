@@ -33,6 +33,13 @@ namespace HeadGait
         public int SwapSegments = 6;
 
         /// <summary>
+        /// While the class is held across the stride (<see cref="SwapSegments"/>), the shown position goes on at the step
+        /// period instead of standing still: the model's feet swapped, not the walker's, and a position that waits for the
+        /// model's class to come round again loses half a stride, one step, each time.
+        /// </summary>
+        public bool SwapCarriesOn = true;
+
+        /// <summary>
         /// While walking, a window the walking gate passes with at least these log-odds (over 99 % sure it is walking) is
         /// not let end the walk: the model's standing probability counts <see cref="SureWalkingStandingWeight"/> of itself.
         /// A network meets a walker bouncier than any it trained on with confident "standing" (the BLSTM with the
