@@ -103,6 +103,48 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
+        /// Left-foot landings and the last 100 windows' agreement with the walk when confident scores follow the segments
+        /// in order at a 1.1 s stride for three strides, except that windows 120-159 name the class half a stride on (the
+        /// model's feet swapped for 0.4 s, then back).
+        /// </summary>
+        static (int landings, bool followsAtTheEnd) SwappedForAWhile(BlstmClassifier blstm)
+        {
+            int n = blstm.Segments.Count, classes = blstm.Segments.ClassCount;
+            var sequence = new List<int>();
+            for (int stride = 0; stride < 3; stride++)
+                for (int k = 0; k < n; k++)
+                    for (int w = Math.Max(4, (int)Math.Round(blstm.Segments.Length(k) * 110)); w > 0; w--) sequence.Add(k);
+            var scores = new double[sequence.Count * classes];
+            for (int i = 0; i < sequence.Count; i++)
+            {
+                int named = i >= 120 && i < 160 ? (sequence[i] + n / 2) % n : sequence[i];
+                for (int c = 0; c < classes; c++) scores[i * classes + c] = c == named ? 0.97 : 0.03 / (classes - 1);
+            }
+            int landings = 0;
+            bool follows = true;
+            GaitPhase previous = GaitPhase.Standing;
+            for (int i = 0; i < sequence.Count; i++)
+            {
+                var p = blstm.ClassifyScored(scores, i, 0.01 * i, 100);
+                if (GaitPhases.IsSwing(previous) && GaitPhases.IsStance(p.Left)) landings++;
+                previous = p.Left;
+                if (i >= sequence.Count - 100) follows &= p.Left == blstm.Segments.Left(sequence[i]) && p.Right == blstm.Segments.Right(sequence[i]);
+            }
+            return (landings, follows);
+        }
+
+        [Test]
+        public void WhileTheFeetAreHeldAcrossTheStrideTheShownPositionGoesOn()
+        {
+            // Three strides from the left foot's contact: it lands again at the start of the second and the third.
+            var (landings, follows) = SwappedForAWhile(Blstm(Models));
+            Assert.That(landings, Is.EqualTo(2), "no step lost while the model's feet were swapped");
+            Assert.That(follows, Is.True, "and the legs show what the model says once it is back");
+            var waiting = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SwapCarriesOn = false });
+            Assert.That(SwappedForAWhile(waiting).landings, Is.LessThan(2), "a held class that stands still waits a step away");
+        }
+
+        /// <summary>
         /// What the BLSTM shows over 2 s of confident walking scores (the segments in order at a 1.1 s stride) and then 1 s
         /// of standing at <paramref name="standing"/> (the walk's next segment second, as a network's runner-up), the gate
         /// saying <paramref name="gate"/> throughout.

@@ -36,6 +36,7 @@ namespace HeadGait
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
         double lastPosition;  // stride position of the last walking prediction
+        double carriedSince = double.NaN; // when the shown class began to be carried across a swap (SwapCarrySteps); NaN when not
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
@@ -164,6 +165,7 @@ namespace HeadGait
             stepPeriod = DefaultStepPeriod;
             refusedRun = 0;
             walkStartTime = double.NaN;
+            carriedSince = double.NaN;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -306,12 +308,16 @@ namespace HeadGait
             if (filter != null && WasWalking && best != Segments.StandingClass)
             {
                 int steady = Steady(best, out bool swapped);
-                if (swapped && filter.Settings.SwapCarriesOn)
+                double pace = rhythmPeriod > 0 ? rhythmPeriod : stepPeriod;
+                if (!swapped) carriedSince = double.NaN;
+                else if (double.IsNaN(carriedSince)) carriedSince = now;
+                if (swapped && now - carriedSince < filter.Settings.SwapCarrySteps * pace)
                 {
-                    carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * (rhythmPeriod > 0 ? rhythmPeriod : stepPeriod)));
+                    carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * pace));
                     best = SegmentAt(carriedPosition);
                     carried = true;
                 }
+                else if (swapped && filter.Settings.SwapCarrySteps > 0) best = best; // carried long enough: the feet did swap
                 else best = steady;
             }
             if (best == Segments.StandingClass)
@@ -329,7 +335,8 @@ namespace HeadGait
             double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = carried ? carriedPosition : Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
             lastPosition = PhaseMap.Wrap(s);
-            return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
+            double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmPeriod > 0 ? rhythmPeriod : stepPeriod;
+            return GaitPrediction.Walking(now, s, shownPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
 
         /// <summary>

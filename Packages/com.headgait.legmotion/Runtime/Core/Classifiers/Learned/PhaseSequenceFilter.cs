@@ -37,7 +37,9 @@ namespace HeadGait
         /// period instead of standing still: the model's feet swapped, not the walker's, and a position that waits for the
         /// model's class to come round again loses half a stride, one step, each time.
         /// </summary>
-        public bool SwapCarriesOn = true;
+        public double SwapCarrySteps = 1.0;
+
+        public bool PeriodFromRhythm = true;
 
         /// <summary>
         /// While walking, a window the walking gate passes with at least these log-odds (over 99 % sure it is walking) is
