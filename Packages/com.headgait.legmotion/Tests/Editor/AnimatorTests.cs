@@ -217,6 +217,10 @@ namespace HeadGait.Tests
             Assert.That(GaitPhases.IsStance(map.PhaseAt(Foot.Right, a.StridePosition, 0.8)), Is.True, "where the map at the slower period still has it standing");
             for (int i = 0; i < 30; i++, t += Dt)
                 frames.Add(a.Update(GaitPrediction.Walking(t, a.StridePosition - 0.05, 0.9, 1, map)));
+            // On to the right foot's next contact: a second one in a row shows only once it comes.
+            for (int i = 0; i < 400 && !(a.StridePosition > 0.55 && a.StridePosition < 0.6); i++, t += Dt)
+                frames.Add(a.Update(GaitPrediction.Walking(t, a.StridePosition + 0.01, 0.9, 1, map)));
+            Assert.That(a.StridePosition, Is.InRange(0.55, 0.6), "walked past the right foot's next contact");
             var contacts = PhaseEvents.Contacts(frames.ConvertAll(f => f.Time), frames.ConvertAll(f => f.Left), frames.ConvertAll(f => f.Right));
             for (int c = 1; c < contacts.Count; c++)
                 Assert.That(contacts[c].Foot, Is.Not.EqualTo(contacts[c - 1].Foot), $"at {contacts[c].Time:F2} s the {contacts[c].Foot} foot lands twice");

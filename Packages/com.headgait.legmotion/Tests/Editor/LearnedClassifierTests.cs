@@ -99,7 +99,8 @@ namespace HeadGait.Tests
             var (following, landings) = Flickering(blstm, 0, strides: 3, shiftAfter: 150, shift: n / 2);
             Assert.That(following.GetRange(following.Count - 100, 100), Is.All.True, "a stride later the legs show what the model says");
             int firstFollowing = following.FindIndex(150, f => f);
-            Assert.That(firstFollowing - 150, Is.LessThan(30), "held for at most a few segments (0.3 s)");
+            // Carried on for a step (SwapCarrySteps at the default 0.55 s step) before the swap is taken, and a few windows more.
+            Assert.That(firstFollowing - 150, Is.LessThan(new PhaseFilterSettings().SwapCarrySteps * 55 + 10), "held for at most about a step");
         }
 
         /// <summary>
@@ -140,8 +141,8 @@ namespace HeadGait.Tests
             var (landings, follows) = SwappedForAWhile(Blstm(Models));
             Assert.That(landings, Is.EqualTo(2), "no step lost while the model's feet were swapped");
             Assert.That(follows, Is.True, "and the legs show what the model says once it is back");
-            var waiting = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SwapCarriesOn = false });
-            Assert.That(SwappedForAWhile(waiting).landings, Is.LessThan(2), "a held class that stands still waits a step away");
+            var waiting = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SwapCarrySteps = 0 });
+            Assert.That(SwappedForAWhile(waiting).landings, Is.Not.EqualTo(2), "a held class that stands still, then takes the model's class back, lands the foot out of turn");
         }
 
         /// <summary>

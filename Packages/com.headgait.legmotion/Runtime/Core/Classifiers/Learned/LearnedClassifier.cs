@@ -195,7 +195,8 @@ namespace HeadGait
         public GaitPrediction Classify(SignalWindow window)
         {
             evaluator.Evaluate(Standardise(window), 1, scores);
-            return Decide(window.EndTime, window.SampleRate, JudgeGate(window), ReadTilt(window));
+            var gate = JudgeGate(window);
+            return Decide(window.EndTime, window.SampleRate, gate, ReadTilt(window), rhythmPeriod);
         }
 
         /// <summary>
@@ -211,6 +212,13 @@ namespace HeadGait
             tilt.Follow(window);
             return tilt.Change;
         }
+
+        /// <summary>
+        /// The step period (s) the head's rhythm showed at the last reading <see cref="JudgeGate"/> made
+        /// (<see cref="StepRhythm.ShowsStepPeriod"/>; 0 when it showed none, or without the gate or the time filter's
+        /// <see cref="PhaseFilterSettings.HoldOnRhythm"/>): what a batch hands back to <see cref="ClassifyScored"/> per window.
+        /// </summary>
+        public double RhythmPeriod => rhythmPeriod;
 
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
         public GateVerdict JudgeGate(SignalWindow window)
@@ -245,23 +253,20 @@ namespace HeadGait
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tiltChange"/>: what
         /// <see cref="ReadTilt"/> read of the window.
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0)
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0, double rhythmStepPeriod = 0)
         {
             Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
-            return Decide(endTime, sampleRate, gate, tiltChange);
+            return Decide(endTime, sampleRate, gate, tiltChange, rhythmStepPeriod);
         }
 
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
-        public double DebugRawStanding; public GateVerdict DebugGate; public bool DebugBending, DebugWasWalking; // DEBUG
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange, double rhythmStepPeriod)
         {
             ToProbabilities(scores, probabilities);
-            DebugRawStanding = probabilities[Segments.StandingClass]; DebugGate = gate; DebugWasWalking = WasWalking;
             bool bending = Bending(tiltChange, now);
-            DebugBending = bending;
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
@@ -308,17 +313,17 @@ namespace HeadGait
             if (filter != null && WasWalking && best != Segments.StandingClass)
             {
                 int steady = Steady(best, out bool swapped);
-                double pace = rhythmPeriod > 0 ? rhythmPeriod : stepPeriod;
+                double pace = rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
                 if (!swapped) carriedSince = double.NaN;
                 else if (double.IsNaN(carriedSince)) carriedSince = now;
-                if (swapped && now - carriedSince < filter.Settings.SwapCarrySteps * pace)
+                if (!swapped || !(filter.Settings.SwapCarrySteps > 0)) best = steady;
+                else if (now - carriedSince < filter.Settings.SwapCarrySteps * pace)
                 {
                     carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * pace));
                     best = SegmentAt(carriedPosition);
                     carried = true;
                 }
-                else if (swapped && filter.Settings.SwapCarrySteps > 0) best = best; // carried long enough: the feet did swap
-                else best = steady;
+                // else carried for SwapCarrySteps and still across the stride: the feet did swap, and the model's class shows.
             }
             if (best == Segments.StandingClass)
             {
@@ -335,7 +340,7 @@ namespace HeadGait
             double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = carried ? carriedPosition : Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
             lastPosition = PhaseMap.Wrap(s);
-            double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmPeriod > 0 ? rhythmPeriod : stepPeriod;
+            double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
             return GaitPrediction.Walking(now, s, shownPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
 
