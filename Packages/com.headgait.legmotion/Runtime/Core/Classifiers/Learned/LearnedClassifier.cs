@@ -9,7 +9,8 @@ namespace HeadGait
     /// <see cref="Evaluator"/> (the C# network, or the ONNX export in Sentis; windows may be scored in batches), turns the scores into
     /// probabilities, filters them over time with the gait's order (<see cref="PhaseSequenceFilter"/>, unless turned off)
     /// and reports the most likely class. Its stride position is the segment's, nudged towards the likelier neighbour;
-    /// its step period comes from the time between predicted foot contacts.
+    /// its step period is the head's rhythm's where it shows one (<see cref="PhaseFilterSettings.PeriodFromRhythm"/>), else
+    /// comes from the time between predicted foot contacts.
     /// </summary>
     public abstract class LearnedClassifier : IGaitClassifier
     {
@@ -251,7 +252,8 @@ namespace HeadGait
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
         /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tiltChange"/>: what
-        /// <see cref="ReadTilt"/> read of the window.
+        /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
+        /// <see cref="JudgeGate"/> judged it (0: none).
         /// </summary>
         public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0, double rhythmStepPeriod = 0)
         {
