@@ -197,6 +197,36 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AStepBackStopsAtTheToeOffTheFramesShowNotTheMaps()
+        {
+            // The right foot's stance share is latched at its contact at a 0.55 s step; the walk then slows, and at the
+            // slower period the map's stance lasts longer. Predictions a little behind the clock just after the right toe-off
+            // pull it back: checked against the map's later toe-off the step back looked clear, crossed the latched one, and
+            // the right foot landed twice.
+            var map = Map.WithStance(0.2, 1.1);
+            var a = new GaitAnimatorStateMachine(map);
+            var frames = new List<AnimatorFrame>();
+            double t = 0;
+            for (int i = 0; i < 200 && !(frames.Count > 20 && a.StridePosition > 0.6 && a.StridePosition < 0.7); i++, t += Dt)
+                frames.Add(a.Update(GaitPrediction.Walking(t, 0.3 + i * Dt / (2 * Step), Step, 1, map)));
+            Assert.That(a.StridePosition, Is.InRange(0.6, 0.7), "walked past the right foot's contact");
+            double toeOff = PhaseMap.Wrap(map.StridePositionOfOnset(Foot.Right, GaitPhase.InitialContact) + map.StanceShare(Step));
+            for (int i = 0; i < 400 && !(a.StridePosition > toeOff + 0.003 && a.StridePosition < toeOff + 0.1); i++, t += Dt)
+                frames.Add(a.Update(GaitPrediction.Walking(t, a.StridePosition + 0.01, 0.9, 1, map)));
+            Assert.That(frames[frames.Count - 1].Right, Is.EqualTo(GaitPhase.InitialSwing), "the right foot has lifted");
+            Assert.That(GaitPhases.IsStance(map.PhaseAt(Foot.Right, a.StridePosition, 0.8)), Is.True, "where the map at the slower period still has it standing");
+            for (int i = 0; i < 30; i++, t += Dt)
+                frames.Add(a.Update(GaitPrediction.Walking(t, a.StridePosition - 0.05, 0.9, 1, map)));
+            // On to the right foot's next contact: a second one in a row shows only once it comes.
+            for (int i = 0; i < 400 && !(a.StridePosition > 0.55 && a.StridePosition < 0.6); i++, t += Dt)
+                frames.Add(a.Update(GaitPrediction.Walking(t, a.StridePosition + 0.01, 0.9, 1, map)));
+            Assert.That(a.StridePosition, Is.InRange(0.55, 0.6), "walked past the right foot's next contact");
+            var contacts = PhaseEvents.Contacts(frames.ConvertAll(f => f.Time), frames.ConvertAll(f => f.Left), frames.ConvertAll(f => f.Right));
+            for (int c = 1; c < contacts.Count; c++)
+                Assert.That(contacts[c].Foot, Is.Not.EqualTo(contacts[c - 1].Foot), $"at {contacts[c].Time:F2} s the {contacts[c].Foot} foot lands twice");
+        }
+
+        [Test]
         public void StandingReportsStandingForBothFeet()
         {
             var a = new GaitAnimatorStateMachine(Map);

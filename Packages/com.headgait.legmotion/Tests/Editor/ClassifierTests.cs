@@ -427,6 +427,18 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AnEstablishedThrWalkRidesOutTheGateLongerThanAYoungOne()
+        {
+            // In turns and at slow wearers' calm steps the gate shuts for a few tenths of a second while the walk goes on;
+            // false walks in still activities are younger than the rhythm's span and stop as before.
+            var clock = new ThresholdSettings().Clock;
+            Assert.That(clock.StopAfterStillWindowsAfter(double.NaN), Is.EqualTo(clock.StopAfterStillWindows), "no walk shown");
+            Assert.That(clock.StopAfterStillWindowsAfter(clock.EstablishedAfter - 0.01), Is.EqualTo(clock.StopAfterStillWindows), "a young walk");
+            Assert.That(clock.StopAfterStillWindowsAfter(clock.EstablishedAfter), Is.GreaterThan(clock.StopAfterStillWindows), "an established one");
+            Assert.That(new CorrelationSettings().Clock.StopAfterStillWindowsAfter(60), Is.EqualTo(clock.StopAfterStillWindows), "COR as before");
+        }
+
+        [Test]
         public void StandingStillIsStanding()
         {
             var rec = WalkingStreamGenerator.Generate("still", GaitSubject.Random(3), new StreamScript().Stand(20), 3);

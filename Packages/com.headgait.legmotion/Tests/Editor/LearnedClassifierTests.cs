@@ -99,7 +99,50 @@ namespace HeadGait.Tests
             var (following, landings) = Flickering(blstm, 0, strides: 3, shiftAfter: 150, shift: n / 2);
             Assert.That(following.GetRange(following.Count - 100, 100), Is.All.True, "a stride later the legs show what the model says");
             int firstFollowing = following.FindIndex(150, f => f);
-            Assert.That(firstFollowing - 150, Is.LessThan(30), "held for at most a few segments (0.3 s)");
+            // Carried on for a step (SwapCarrySteps at the default 0.55 s step) before the swap is taken, and a few windows more.
+            Assert.That(firstFollowing - 150, Is.LessThan(new PhaseFilterSettings().SwapCarrySteps * 55 + 10), "held for at most about a step");
+        }
+
+        /// <summary>
+        /// Left-foot landings and the last 100 windows' agreement with the walk when confident scores follow the segments
+        /// in order at a 1.1 s stride for three strides, except that windows 120-159 name the class half a stride on (the
+        /// model's feet swapped for 0.4 s, then back).
+        /// </summary>
+        static (int landings, bool followsAtTheEnd) SwappedForAWhile(BlstmClassifier blstm)
+        {
+            int n = blstm.Segments.Count, classes = blstm.Segments.ClassCount;
+            var sequence = new List<int>();
+            for (int stride = 0; stride < 3; stride++)
+                for (int k = 0; k < n; k++)
+                    for (int w = Math.Max(4, (int)Math.Round(blstm.Segments.Length(k) * 110)); w > 0; w--) sequence.Add(k);
+            var scores = new double[sequence.Count * classes];
+            for (int i = 0; i < sequence.Count; i++)
+            {
+                int named = i >= 120 && i < 160 ? (sequence[i] + n / 2) % n : sequence[i];
+                for (int c = 0; c < classes; c++) scores[i * classes + c] = c == named ? 0.97 : 0.03 / (classes - 1);
+            }
+            int landings = 0;
+            bool follows = true;
+            GaitPhase previous = GaitPhase.Standing;
+            for (int i = 0; i < sequence.Count; i++)
+            {
+                var p = blstm.ClassifyScored(scores, i, 0.01 * i, 100);
+                if (GaitPhases.IsSwing(previous) && GaitPhases.IsStance(p.Left)) landings++;
+                previous = p.Left;
+                if (i >= sequence.Count - 100) follows &= p.Left == blstm.Segments.Left(sequence[i]) && p.Right == blstm.Segments.Right(sequence[i]);
+            }
+            return (landings, follows);
+        }
+
+        [Test]
+        public void WhileTheFeetAreHeldAcrossTheStrideTheShownPositionGoesOn()
+        {
+            // Three strides from the left foot's contact: it lands again at the start of the second and the third.
+            var (landings, follows) = SwappedForAWhile(Blstm(Models));
+            Assert.That(landings, Is.EqualTo(2), "no step lost while the model's feet were swapped");
+            Assert.That(follows, Is.True, "and the legs show what the model says once it is back");
+            var waiting = new BlstmClassifier(GaitModels.Load(Models).Blstm, new PhaseFilterSettings { SwapCarrySteps = 0 });
+            Assert.That(SwappedForAWhile(waiting).landings, Is.Not.EqualTo(2), "a held class that stands still, then takes the model's class back, lands the foot out of turn");
         }
 
         /// <summary>

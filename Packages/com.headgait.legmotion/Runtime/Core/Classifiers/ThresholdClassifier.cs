@@ -85,7 +85,7 @@ namespace HeadGait
         /// classifier's, 96.7 to 94.4 % at 5 ms for 23.2 to 23.0 %): the first contact of each clip, where it starts its
         /// walk, already shows the foot landed in its first walking frame.
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35 };
 
         public ThresholdSettings Clone()
         {
@@ -163,6 +163,7 @@ namespace HeadGait
         double currentPeak;    // peak of the step being crossed
         bool inStep;
         int stillWindows;
+        double walkingSince = double.NaN; // when the walk shown now began; NaN while standing
         double datingShift; // how much earlier than its threshold crossing the last contact was dated (s)
 
         public ThresholdClassifier(ThresholdSettings settings = null)
@@ -198,6 +199,7 @@ namespace HeadGait
             currentPeak = 0;
             inStep = false;
             stillWindows = 0;
+            walkingSince = double.NaN;
         }
 
         public GaitPrediction Classify(SignalWindow window)
@@ -224,7 +226,9 @@ namespace HeadGait
             bool moving = settings.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;
-            if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
+            if (!clock.IsWalking(now)) walkingSince = double.NaN;
+            else if (double.IsNaN(walkingSince)) walkingSince = now;
+            if (stillWindows == settings.Clock.StopAfterStillWindowsAfter(now - walkingSince)) clock.Stop();
             bool walkingBefore = clock.IsWalking(now);
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks
             // back over its newest half second: a stream that begins mid-step crossed before it, and that contact is

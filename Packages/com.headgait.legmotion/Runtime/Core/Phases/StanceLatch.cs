@@ -33,5 +33,16 @@ namespace HeadGait
             lastCycle[f] = u;
             return map.PhaseAtCycle(u, share[f]);
         }
+
+        /// <summary>
+        /// The foot's phase at a stride position as <see cref="PhaseAt"/> would show it with the share it holds now (the
+        /// period's share when it holds none), without taking a new one: for checking a move before making it.
+        /// </summary>
+        public GaitPhase PhaseWithHeldShare(PhaseMap map, Foot foot, double stridePosition, double stepPeriod)
+        {
+            if (map == null) throw new ArgumentNullException(nameof(map));
+            int f = (int)foot;
+            return map.PhaseAtCycle(map.CyclePosition(foot, stridePosition), double.IsNaN(share[f]) ? map.StanceShare(stepPeriod) : share[f]);
+        }
     }
 }

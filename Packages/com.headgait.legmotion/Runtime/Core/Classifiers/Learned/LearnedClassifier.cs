@@ -9,7 +9,8 @@ namespace HeadGait
     /// <see cref="Evaluator"/> (the C# network, or the ONNX export in Sentis; windows may be scored in batches), turns the scores into
     /// probabilities, filters them over time with the gait's order (<see cref="PhaseSequenceFilter"/>, unless turned off)
     /// and reports the most likely class. Its stride position is the segment's, nudged towards the likelier neighbour;
-    /// its step period comes from the time between predicted foot contacts.
+    /// its step period is the head's rhythm's where it shows one (<see cref="PhaseFilterSettings.PeriodFromRhythm"/>), else
+    /// comes from the time between predicted foot contacts.
     /// </summary>
     public abstract class LearnedClassifier : IGaitClassifier
     {
@@ -32,10 +33,13 @@ namespace HeadGait
         readonly HeadTilt tilt = new HeadTilt();
         bool rhythmHolds;     // whether the head's rhythm held a walk at its last reading (PhaseFilterSettings.HoldOnRhythm)
         int rhythmCountdown;  // windows until the next reading
+        double rhythmPeriod;  // the step period the head's rhythm showed at its last reading; 0 when it showed none
         ILearnedEvaluator evaluator;
         int lastClass = -1;
         double lastTime = double.NaN;
         double lastContactTime = double.NaN;
+        double lastPosition;  // stride position of the last walking prediction
+        double carriedSince = double.NaN; // when the shown class began to be carried across a swap (SwapCarrySteps); NaN when not
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
@@ -215,6 +219,7 @@ namespace HeadGait
             stepPeriod = DefaultStepPeriod;
             refusedRun = 0;
             walkStartTime = double.NaN;
+            carriedSince = double.NaN;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -244,7 +249,8 @@ namespace HeadGait
         public GaitPrediction Classify(SignalWindow window)
         {
             evaluator.Evaluate(Standardise(window), 1, scores);
-            return Decide(window.EndTime, window.SampleRate, JudgeGate(window), ReadTilt(window));
+            var gate = JudgeGate(window);
+            return Decide(window.EndTime, window.SampleRate, gate, ReadTilt(window), rhythmPeriod);
         }
 
         /// <summary>
@@ -260,6 +266,13 @@ namespace HeadGait
             tilt.Follow(window);
             return tilt.Change;
         }
+
+        /// <summary>
+        /// The step period (s) the head's rhythm showed at the last reading <see cref="JudgeGate"/> made
+        /// (<see cref="StepRhythm.ShowsStepPeriod"/>; 0 when it showed none, or without the gate or the time filter's
+        /// <see cref="PhaseFilterSettings.HoldOnRhythm"/>): what a batch hands back to <see cref="ClassifyScored"/> per window.
+        /// </summary>
+        public double RhythmPeriod => rhythmPeriod;
 
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
         public GateVerdict JudgeGate(SignalWindow window)
@@ -283,26 +296,29 @@ namespace HeadGait
         {
             if (filter == null || !filter.Settings.HoldOnRhythm || rhythmCountdown-- > 0) return;
             rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
-            rhythmHolds = StepRhythm.Of(window, Gate.LevelTolerance).HoldsWalk;
+            var rhythm = StepRhythm.Of(window, Gate.LevelTolerance);
+            rhythmHolds = rhythm.HoldsWalk;
+            rhythmPeriod = rhythm.ShowsStepPeriod ? rhythm.Period : 0;
         }
 
         /// <summary>
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
         /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tiltChange"/>: what
-        /// <see cref="ReadTilt"/> read of the window.
+        /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
+        /// <see cref="JudgeGate"/> judged it (0: none).
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0)
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0, double rhythmStepPeriod = 0)
         {
             Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
-            return Decide(endTime, sampleRate, gate, tiltChange);
+            return Decide(endTime, sampleRate, gate, tiltChange, rhythmStepPeriod);
         }
 
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange, double rhythmStepPeriod)
         {
             ToProbabilities(scores, probabilities);
             bool wearer = WearerProbabilities(scores, wearerProbabilities);
@@ -348,8 +364,23 @@ namespace HeadGait
                     best = MostLikelyWalking(p);
                 }
             }
+            bool carried = false;
+            double carriedPosition = 0;
             if (filter != null && WasWalking && best != Segments.StandingClass)
-                best = Steady(best);
+            {
+                int steady = Steady(best, out bool swapped);
+                double pace = rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
+                if (!swapped) carriedSince = double.NaN;
+                else if (double.IsNaN(carriedSince)) carriedSince = now;
+                if (!swapped || !(filter.Settings.SwapCarrySteps > 0)) best = steady;
+                else if (now - carriedSince < filter.Settings.SwapCarrySteps * pace)
+                {
+                    carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * pace));
+                    best = SegmentAt(carriedPosition);
+                    carried = true;
+                }
+                // else carried for SwapCarrySteps and still across the stride: the feet did swap, and the model's class shows.
+            }
             if (best == Segments.StandingClass)
             {
                 lastClass = best;
@@ -363,8 +394,10 @@ namespace HeadGait
             int n = Segments.Count;
             double before = p[(best + n - 1) % n], after = p[(best + 1) % n];
             double lean = (after - before) / (p[best] + before + after + 1e-12);
-            double s = Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
-            return GaitPrediction.Walking(now, s, stepPeriod, p[best], Segments.Left(best), Segments.Right(best));
+            double s = carried ? carriedPosition : Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
+            lastPosition = PhaseMap.Wrap(s);
+            double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
+            return GaitPrediction.Walking(now, s, shownPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
 
         /// <summary>
@@ -421,14 +454,22 @@ namespace HeadGait
         /// The class to show after <paramref name="best"/> while walking: the last one is held when best is a little behind
         /// it or across the stride from it (<see cref="PhaseFilterSettings.HoldBackSegments"/>, <see cref="PhaseFilterSettings.SwapSegments"/>).
         /// </summary>
-        int Steady(int best)
+        int Steady(int best, out bool swapped)
         {
             int n = Segments.Count;
             var filterSettings = filter.Settings;
             int back = (lastClass - best + n) % n, ahead = (best - lastClass + n) % n;
             bool behind = back >= 1 && back <= filterSettings.HoldBackSegments;
-            bool swapped = ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;
+            swapped = !behind && ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;
             return behind || swapped ? lastClass : best;
+        }
+
+        /// <summary>The stride segment holding stride position x.</summary>
+        int SegmentAt(double x)
+        {
+            for (int k = 0; k < Segments.Count; k++)
+                if (PhaseMap.Wrap(x - Segments.Start(k)) < Segments.Length(k)) return k;
+            return 0;
         }
 
         /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>
