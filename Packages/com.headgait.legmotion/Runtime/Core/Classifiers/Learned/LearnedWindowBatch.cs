@@ -24,7 +24,7 @@ namespace HeadGait
             public int Row;
             public double Time, SampleRate;
             public GateVerdict Gate;
-            public double TiltChange;
+            public HeadTiltReading Tilt;
         }
 
         public LearnedWindowBatch(LearnedClassifier classifier)
@@ -51,7 +51,7 @@ namespace HeadGait
                 Array.Resize(ref scores, capacity * classes);
             }
             Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
-            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), TiltChange = classifier.ReadTilt(window) });
+            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), Tilt = classifier.ReadTilt(window) });
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -88,7 +88,7 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.Gate, e.TiltChange);
+            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt);
         }
 
         public void Clear()
