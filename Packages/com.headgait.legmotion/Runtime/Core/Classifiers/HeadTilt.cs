@@ -21,11 +21,14 @@ namespace HeadGait
         /// <summary>Seconds since the head was last read still (infinite before that).</summary>
         public double SinceStill { get; }
 
+        /// <summary>Whether the head's pitch lies more than <paramref name="maxBend"/> degrees from the still head's (0: never).</summary>
+        public bool Bends(double maxBend) => maxBend > 0 && BendFromStill > maxBend;
+
         /// <summary>
-        /// Whether a walk starting now starts from a still head (read still within <see cref="HeadTilt.StillRecent"/> s) whose pitch
-        /// has since moved more than <paramref name="maxBend"/> degrees (0: never).
+        /// Whether a walk starting now starts from a still head (read still within <see cref="HeadTilt.StillRecent"/> s) that is
+        /// has bent away from it (<see cref="Bends"/>).
         /// </summary>
-        public bool BentFromStill(double maxBend) => maxBend > 0 && SinceStill <= HeadTilt.StillRecent && BendFromStill > maxBend;
+        public bool BentFromStill(double maxBend) => SinceStill <= HeadTilt.StillRecent && Bends(maxBend);
     }
 
     /// <summary>
@@ -67,20 +70,21 @@ namespace HeadGait
         /// first step and the start of a bend both move the newest half second. A walk that starts within
         /// <see cref="StillRecent"/> seconds of such a reading starts from a still head, and for
         /// <see cref="StillStartProbation"/> seconds its pitch is compared with the still head's, over the newest
-        /// <see cref="BendMean"/> seconds (<see cref="StepClockSettings.StillStartMaxBend"/>). Chosen on the real glasses
-        /// with the limit (see the measurements log): of the starts from a still head so read, COR's walking files hold
-        /// 1 in 734, its picking-up files 46 in 108.
+        /// <see cref="BendMean"/> seconds (a step's push and brake swing a shorter mean's pitch by up to 9 degrees on the
+        /// generated walkers) (<see cref="StepClockSettings.StillStartMaxBend"/>). Chosen on the real glasses
+        /// (see the measurements log): of COR's walks there that start after a still second, its walking files hold 1 in
+        /// 734 starts, its picking-up files 46 in 108.
         /// </summary>
-        public const double StillSpan = 1.0, StillGap = 0.5, StillMaxSpread = 0.3, StillRecent = 0.3, StillStartProbation = 1.0, BendMean = 0.2;
+        public const double StillSpan = 1.0, StillGap = 0.5, StillMaxSpread = 0.3, StillRecent = 0.3, StillStartProbation = 1.0, BendMean = 0.3;
 
         /// <summary>
         /// Most the head's pitch may move from a still head's within <see cref="StillStartProbation"/> of a walk's start
         /// (degrees; <see cref="StepClockSettings.StillStartMaxBend"/>, <see cref="PhaseFilterSettings.StillStartMaxBend"/>).
         /// </summary>
-        public const double DefaultStillStartMaxBend = 8;
+        public const double DefaultStillStartMaxBend = 10;
 
         int countdown;
-        double stillForward, stillVertical;       // the last still head's direction of gravity (pitch plane)
+        double stillPitch;                        // the last still head's pitch (radians)
         double stillSeen = double.NegativeInfinity;
 
         /// <summary>Degrees the head's tilt moved over the newest <see cref="Span"/> seconds, at the last reading.</summary>
@@ -99,32 +103,67 @@ namespace HeadGait
 
         public HeadTilt() => Reset();
 
-        /// <summary>Reads the tilt from <paramref name="window"/> every <see cref="EveryWindows"/> windows (call it for every window, in order).</summary>
+        /// <summary>
+        /// Reads the tilt from <paramref name="window"/> every <see cref="EveryWindows"/> windows (call it for every window, in
+        /// order); with <paramref name="still"/>, also the still head (<see cref="FollowStill"/>), its bend every window.
+        /// </summary>
         public void Follow(SignalWindow window, bool still = false)
         {
-            if (countdown-- > 0) return;
-            countdown = EveryWindows - 1;
-            Change = ChangeOver(window, Span);
-            if (still) FollowStill(window);
-            else Reading = new HeadTiltReading(Change, 0, double.PositiveInfinity);
+            bool read = countdown-- <= 0;
+            if (read)
+            {
+                countdown = EveryWindows - 1;
+                Change = ChangeOver(window, Span);
+            }
+            if (still) FollowStill(window, read);
+            else if (read) Reading = new HeadTiltReading(Change, 0, double.PositiveInfinity);
         }
 
         /// <summary>
-        /// Reads whether the head is still (<see cref="StillSpan"/>), keeps a still head's direction of gravity, and how far
-        /// the head's pitch over the newest <see cref="BendMean"/> seconds lies from it, into <see cref="Reading"/> (with
-        /// <see cref="Change"/> as last read).
+        /// Reads whether the head is still (<see cref="StillSpan"/>; with <paramref name="readStill"/>: it changes slowly, and
+        /// a reading costs) and keeps a still head's direction of gravity; and, every call, how far the head's pitch over the
+        /// newest <see cref="BendMean"/> seconds lies from it, into
+        /// <see cref="Reading"/> (with <see cref="Change"/> as last read). A bend is caught at the window it passes the limit,
+        /// before a contact between two readings could start a walk the next reading would withdraw.
         /// </summary>
-        public void FollowStill(SignalWindow window)
+        public void FollowStill(SignalWindow window, bool readStill = true)
         {
             double now = window.EndTime;
-            if (StillDirection(window, StillSpan, StillGap, StillMaxSpread, out double forward, out double vertical))
+            if (readStill && StillDirection(window, StillSpan, StillGap, StillMaxSpread, out double forward, out double vertical))
             {
-                stillForward = forward;
-                stillVertical = vertical;
+                stillPitch = Math.Atan2(forward, vertical);
                 stillSeen = now;
             }
-            double bend = double.IsNegativeInfinity(stillSeen) ? 0 : PitchFrom(window, BendMean, stillForward, stillVertical);
+            double bend = !double.IsNegativeInfinity(stillSeen) && Pitch(window, BendMean, out double newest) ? Degrees(newest - stillPitch) : 0;
             Reading = new HeadTiltReading(Change, bend, now - stillSeen);
+        }
+
+        /// <summary>
+        /// The head's pitch (radians: the direction of gravity in the forward-vertical plane; only the pitch, as bending to
+        /// the floor tilts the head forwards and a step's sway would add its roll) over the window's newest
+        /// <paramref name="seconds"/>; false where the window holds too few samples.
+        /// </summary>
+        static bool Pitch(SignalWindow w, double seconds, out double pitch)
+        {
+            pitch = 0;
+            int n = Math.Max(1, (int)Math.Round(seconds * w.SampleRate));
+            if (n > Math.Min(w.Count, w.Length)) return false;
+            double x = 0, z = 0;
+            for (int i = w.Length - n; i < w.Length; i++)
+            {
+                x += w.Forward[i];
+                z += w.Vertical[i];
+            }
+            if (x * x + z * z <= 1e-12) return false;
+            pitch = Math.Atan2(x, z);
+            return true;
+        }
+
+        /// <summary>The size of an angle's difference in degrees (0-180), from radians.</summary>
+        static double Degrees(double radians)
+        {
+            double d = Math.Abs(radians) % (2 * Math.PI);
+            return (d > Math.PI ? 2 * Math.PI - d : d) * 180 / Math.PI;
         }
 
         /// <summary>
@@ -149,25 +188,6 @@ namespace HeadGait
             forward /= n;
             vertical /= n;
             return smv2 / n - smv * smv <= maxSpread * maxSpread && forward * forward + vertical * vertical > 1e-12;
-        }
-
-        /// <summary>
-        /// Degrees between the head's pitch (the direction of gravity in the forward-vertical plane) over the window's newest
-        /// <paramref name="seconds"/> and the pitch of <paramref name="forward"/>, <paramref name="vertical"/>. Only the
-        /// pitch: bending to the floor tilts the head forwards, and a step's sideways sway would add its roll.
-        /// </summary>
-        public static double PitchFrom(SignalWindow w, double seconds, double forward, double vertical)
-        {
-            int n = Math.Min(Math.Min(w.Count, w.Length), Math.Max(1, (int)Math.Round(seconds * w.SampleRate)));
-            double x = 0, z = 0;
-            for (int i = w.Length - n; i < w.Length; i++)
-            {
-                x += w.Forward[i];
-                z += w.Vertical[i];
-            }
-            if (x * x + z * z <= 1e-12) return 0;
-            double d = Math.Abs(Math.Atan2(x, z) - Math.Atan2(forward, vertical));
-            return (d > Math.PI ? 2 * Math.PI - d : d) * 180 / Math.PI;
         }
 
         /// <summary>

@@ -98,7 +98,7 @@ namespace HeadGait
         /// <see cref="HeadTilt.StillStartProbation"/> seconds of its start, while the head's pitch lies more than this many
         /// degrees from the still head's: bending down to the floor begins with a bump like a first step, and the head
         /// then pitches on down, where a first step moves it a few degrees. Real glasses (realworld, avatar), 8 against off:
-        /// picking up shown as walking THR 2.3 to 1.8 %, COR 7.1 to 4.6 %; walking 89.7 to 89.4 %, 92.6 to 92.4 % (a few
+        /// picking up shown as walking THR 2.3 to 1.8 %, COR 7.1 to 4.5 %; walking 89.7 to 89.4 %, 92.6 to 92.4 % (a few
         /// walkers pitch their head 10 degrees as they set off; see the measurements log). 0 turns it off.
         /// </summary>
         public double StillStartMaxBend = HeadTilt.DefaultStillStartMaxBend;
@@ -271,6 +271,7 @@ namespace HeadGait
         /// </summary>
         public void FollowRhythm(SignalWindow window, double? levelTolerance)
         {
+            if (settings.StillStartMaxBend > 0) FollowStill(window, rhythmCountdown <= 0);
             if (rhythmCountdown-- > 0) return;
             rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
             var rhythm = StepRhythm.Of(window, levelTolerance);
@@ -279,20 +280,19 @@ namespace HeadGait
             if (rhythmPeriod > 0) lastRhythmPeriod = rhythmPeriod;
             tiltChange = settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0 ? HeadTilt.ChangeOver(window, HeadTilt.Span) : 0;
             if (settings.MaxWalkingTiltChange > 0 && tiltChange > settings.MaxWalkingTiltChange) Stop();
-            if (settings.StillStartMaxBend > 0) FollowStill(window);
             double ratio = settings.RhythmPeriodRatio;
             if (ratio > 1 && rhythmPeriod > 0 && (period > ratio * rhythmPeriod || period * ratio < rhythmPeriod)) period = rhythmPeriod;
         }
 
         /// <summary>
-        /// Reads the still head (<see cref="HeadTilt.FollowStill"/>); while standing, whether a walk starting now starts from
-        /// it; a walk from it is withdrawn on a bend within <see cref="HeadTilt.StillStartProbation"/> seconds of its start
-        /// (<see cref="StepClockSettings.StillStartMaxBend"/>).
+        /// Reads the still head (<see cref="HeadTilt.FollowStill"/>; whether it is still only with <paramref name="readStill"/>,
+        /// its bend every window); while standing, whether a walk starting now starts from it; a walk from it is withdrawn on
+        /// a bend within <see cref="HeadTilt.StillStartProbation"/> seconds of its start (<see cref="StepClockSettings.StillStartMaxBend"/>).
         /// </summary>
-        void FollowStill(SignalWindow window)
+        void FollowStill(SignalWindow window, bool readStill)
         {
             double now = window.EndTime;
-            still.FollowStill(window);
+            still.FollowStill(window, readStill);
             var reading = still.Reading;
             if (!IsWalking(now))
             {
@@ -300,7 +300,7 @@ namespace HeadGait
                 probationUntil = double.NaN;
             }
             else if (double.IsNaN(probationUntil)) probationUntil = now + HeadTilt.StillStartProbation;
-            if (startsFromStill && IsWalking(now) && now < probationUntil && reading.BendFromStill > settings.StillStartMaxBend) Stop();
+            if (startsFromStill && IsWalking(now) && now < probationUntil && reading.Bends(settings.StillStartMaxBend)) Stop();
         }
 
         /// <summary>
@@ -314,7 +314,7 @@ namespace HeadGait
         public bool StartBlocked(double now, double gateLogOdds)
             => !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange
                 || settings.StartNeedsGateScore && !(gateLogOdds > 0)
-                || settings.StillStartMaxBend > 0 && startsFromStill && still.Reading.BendFromStill > settings.StillStartMaxBend);
+                || startsFromStill && still.Reading.Bends(settings.StillStartMaxBend));
 
         /// <summary>
         /// Whether a walk in progress goes on whatever the walking gate says: the head's rhythm still shows the step, into

@@ -344,7 +344,7 @@ namespace HeadGait
             double limit = filter?.Settings.StillStartMaxBend ?? 0;
             if (!(limit > 0)) return false;
             if (!WasWalking) return tilt.BentFromStill(limit);
-            return walkFromStill && now - walkStartTime < HeadTilt.StillStartProbation && tilt.BendFromStill > limit;
+            return walkFromStill && now - walkStartTime < HeadTilt.StillStartProbation && tilt.Bends(limit);
         }
 
         /// <summary>
