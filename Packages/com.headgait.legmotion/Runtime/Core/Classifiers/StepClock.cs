@@ -97,8 +97,8 @@ namespace HeadGait
         /// A walk that starts from a still head (<see cref="HeadTilt.FollowStill"/>) does not start, and is withdrawn within
         /// <see cref="HeadTilt.StillStartProbation"/> seconds of its start, while the head's pitch lies more than this many
         /// degrees from the still head's: bending down to the floor begins with a bump like a first step, and the head
-        /// then pitches on down, where a first step moves it a few degrees. Real glasses (realworld, avatar), 8 against off:
-        /// picking up shown as walking THR 2.3 to 1.8 %, COR 7.1 to 4.5 %; walking 89.7 to 89.4 %, 92.6 to 92.4 % (a few
+        /// then pitches on down, where a first step moves it a few degrees. Real glasses (realworld, avatar), 10 against off:
+        /// picking up shown as walking THR 2.3 to 2.0 %, COR 7.1 to 4.9 %; walking 89.7 to 89.4 %, 92.6 to 92.4 % (a few
         /// walkers pitch their head 10 degrees as they set off; see the measurements log). 0 turns it off.
         /// </summary>
         public double StillStartMaxBend = HeadTilt.DefaultStillStartMaxBend;
