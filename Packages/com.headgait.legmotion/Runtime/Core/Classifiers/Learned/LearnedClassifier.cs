@@ -40,6 +40,7 @@ namespace HeadGait
         double lastContactTime = double.NaN;
         double lastPosition;  // stride position of the last walking prediction
         double carriedSince = double.NaN; // when the shown class began to be carried across a swap (SwapCarrySteps); NaN when not
+        bool walkFromStill;   // whether the walk going on started from a still head (PhaseFilterSettings.StillStartMaxBend)
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
@@ -220,6 +221,7 @@ namespace HeadGait
             refusedRun = 0;
             walkStartTime = double.NaN;
             carriedSince = double.NaN;
+            walkFromStill = false;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -255,16 +257,19 @@ namespace HeadGait
 
         /// <summary>
         /// Degrees the head's tilt moved over the newest <see cref="HeadTilt.Span"/> seconds (<see cref="HeadTilt"/>), for
-        /// <see cref="PhaseFilterSettings.MaxStartTiltChange"/>; call it for every window, in order (it reads every
-        /// <see cref="HeadTilt.EveryWindows"/>). 0 without the time filter or with both limits off. <see cref="Reset"/> leaves
+        /// <see cref="PhaseFilterSettings.MaxStartTiltChange"/>, and its pitch from the last still head's, for
+        /// <see cref="PhaseFilterSettings.StillStartMaxBend"/>; call it for every window, in order (it reads every
+        /// <see cref="HeadTilt.EveryWindows"/>). Nothing without the time filter or with all three limits off. <see cref="Reset"/> leaves
         /// it be: a batch reads its windows' tilt before the restarts between them reset the classifier
         /// (<see cref="LearnedWindowBatch"/>), and one at a time must read the same.
         /// </summary>
-        public double ReadTilt(SignalWindow window)
+        public HeadTiltReading ReadTilt(SignalWindow window)
         {
-            if (filter == null || !(filter.Settings.MaxStartTiltChange > 0 || filter.Settings.MaxWalkingTiltChange > 0)) return 0;
-            tilt.Follow(window);
-            return tilt.Change;
+            if (filter == null) return default;
+            var s = filter.Settings;
+            if (!(s.MaxStartTiltChange > 0 || s.MaxWalkingTiltChange > 0 || s.StillStartMaxBend > 0)) return default;
+            tilt.Follow(window, s.StillStartMaxBend > 0);
+            return tilt.Reading;
         }
 
         /// <summary>
@@ -304,25 +309,25 @@ namespace HeadGait
         /// <summary>
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
         /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
-        /// their order; the time filter and step period carry over from one to the next. <paramref name="tiltChange"/>: what
+        /// their order; the time filter and step period carry over from one to the next. <paramref name="tilt"/>: what
         /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
         /// <see cref="JudgeGate"/> judged it (0: none).
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, double tiltChange = 0, double rhythmStepPeriod = 0)
+        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0)
         {
             Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
-            return Decide(endTime, sampleRate, gate, tiltChange, rhythmStepPeriod);
+            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod);
         }
 
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
         /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, double tiltChange, double rhythmStepPeriod)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod)
         {
             ToProbabilities(scores, probabilities);
             bool wearer = WearerProbabilities(scores, wearerProbabilities);
-            bool bending = Bending(tiltChange, now);
+            bool bending = Bending(tilt.Change, now) || BendingFromStill(tilt, now);
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
@@ -388,7 +393,11 @@ namespace HeadGait
                 return GaitPrediction.Standing(now, p[best]);
             }
             TrackContacts(best, now);
-            if (!WasWalking) walkStartTime = now;
+            if (!WasWalking)
+            {
+                walkStartTime = now;
+                walkFromStill = tilt.SinceStill <= HeadTilt.StillRecent;
+            }
             lastClass = best;
             // Within the segment, lean towards whichever neighbour scores higher.
             int n = Segments.Count;
@@ -448,6 +457,18 @@ namespace HeadGait
             bool young = WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
             double limit = WasWalking && !young ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
             return limit > 0 && tiltChange > limit;
+        }
+
+        /// <summary>
+        /// Whether the head pitched too far from a still head for walking (<see cref="PhaseFilterSettings.StillStartMaxBend"/>):
+        /// to start a walk from it, or to go on with one that started from it within <see cref="HeadTilt.StillStartProbation"/>.
+        /// </summary>
+        bool BendingFromStill(HeadTiltReading tilt, double now)
+        {
+            double limit = filter?.Settings.StillStartMaxBend ?? 0;
+            if (!(limit > 0)) return false;
+            if (!WasWalking) return tilt.BentFromStill(limit);
+            return walkFromStill && now - walkStartTime < HeadTilt.StillStartProbation && tilt.Bends(limit);
         }
 
         /// <summary>

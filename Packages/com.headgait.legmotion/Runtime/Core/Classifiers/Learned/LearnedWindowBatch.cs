@@ -24,7 +24,7 @@ namespace HeadGait
             public int Row;
             public double Time, SampleRate;
             public GateVerdict Gate;
-            public double TiltChange;
+            public HeadTiltReading Tilt;
             public double RhythmPeriod;
         }
 
@@ -52,7 +52,7 @@ namespace HeadGait
                 Array.Resize(ref scores, capacity * classes);
             }
             Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
-            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), TiltChange = classifier.ReadTilt(window), RhythmPeriod = classifier.RhythmPeriod });
+            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), Tilt = classifier.ReadTilt(window), RhythmPeriod = classifier.RhythmPeriod });
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -89,7 +89,7 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.Gate, e.TiltChange, e.RhythmPeriod);
+            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod);
         }
 
         public void Clear()

@@ -115,6 +115,13 @@ namespace HeadGait
         /// </summary>
         public double MaxWalkingTiltChange = HeadTilt.DefaultMaxWalkingChange;
 
+        /// <summary>
+        /// A walk that starts from a still head does not start, and stops within <see cref="HeadTilt.StillStartProbation"/>
+        /// seconds of its start, while the head's pitch lies more than this many degrees from the still head's (the step
+        /// clock's rule, <see cref="StepClockSettings.StillStartMaxBend"/>). 0 turns it off.
+        /// </summary>
+        public double StillStartMaxBend = HeadTilt.DefaultStillStartMaxBend;
+
         /// <summary>Weight of the model's standing probability in a window the gate is sure of (see <see cref="SureWalkingLogOdds"/>).</summary>
         public double SureWalkingStandingWeight = 0.01;
     }

@@ -1,0 +1,162 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>
+    /// Walks that start from a still head (<see cref="StepClockSettings.StillStartMaxBend"/>,
+    /// <see cref="PhaseFilterSettings.StillStartMaxBend"/>): bending down to the floor that begins with step-like bumps is
+    /// not shown as walking, or only briefly; the same bumps with the head level walk as they did without the rule.
+    /// </summary>
+    public class StillStartTests
+    {
+        const double G = 9.80665, Cycle = 6, First = 2;
+
+        /// <summary>
+        /// Standing still, then <paramref name="times"/> times: three heel-strike-like bumps of SMV 0.5 s apart (3 m/s^2; on
+        /// the real glasses, false walks in the picking-up files are mostly begun by such a bump just before the bend) with
+        /// the head swaying to alternate sides, while it pitches forward by <paramref name="degrees"/> over 0.8 s from the first
+        /// bump on, stays down a second and comes up over a second. <paramref name="degrees"/> 0: the bumps with the head level.
+        /// </summary>
+        static Recording BumpsThenBend(int times, double degrees)
+        {
+            var rows = new List<RecordedSample>();
+            for (int i = 0; i < (First + times * Cycle) * 100; i++)
+            {
+                double t = i * 0.01, c = (t - First) % Cycle;
+                double pitch = 0, bump = 0, sway = 0;
+                if (t >= First)
+                {
+                    if (c < 0.8) pitch = c / 0.8;
+                    else if (c < 1.8) pitch = 1;
+                    else if (c < 2.8) pitch = 1 - (c - 1.8);
+                    for (int k = 0; k < 3; k++)
+                    {
+                        double d = c - k * 0.5;
+                        bump += 3 * Math.Exp(-d * d / (2 * 0.04 * 0.04));
+                    }
+                    if (c < 1.5) sway = 0.8 * Math.Sin(Math.PI * c / 0.5);
+                }
+                double angle = pitch * degrees * Math.PI / 180, a = G + bump;
+                rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), sway + 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
+            }
+            return new Recording("bumps then a bend", rows);
+        }
+
+        static GaitModels Models => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+
+        /// <summary>THR or COR as shipped, but with a walking gate that passes everything (the bumps are the gate's to judge otherwise).</summary>
+        static IGaitClassifier StepClocked(string name, double maxBend)
+        {
+            if (name == "thr")
+            {
+                var s = new ThresholdSettings { Gate = WalkingGate.Open };
+                s.Clock.StillStartMaxBend = maxBend;
+                return new ThresholdClassifier(s);
+            }
+            var settings = new CorrelationSettings();
+            settings.Clock.StillStartMaxBend = maxBend;
+            return new CorrelationClassifier(Models.Correlation.With(gate: WalkingGate.Open), settings);
+        }
+
+        /// <summary>Windows shown walking, the longest run of them, and the first one's time.</summary>
+        static (int Walking, int Longest, double First) Walks(IGaitClassifier c, Recording r, Action<double> beforeEach = null)
+        {
+            int walking = 0, run = 0, longest = 0;
+            double first = double.NaN;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(c.WindowLength, StepRhythm.HistorySamples) });
+            foreach (var s in r.Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    beforeEach?.Invoke(w.EndTime);
+                    if (c.Classify(w).IsWalking)
+                    {
+                        walking++;
+                        longest = Math.Max(longest, ++run);
+                        if (double.IsNaN(first)) first = w.EndTime;
+                    }
+                    else run = 0;
+                });
+            return (walking, longest, first);
+        }
+
+        [TestCase("thr")]
+        [TestCase("cor")]
+        public void BumpsAsTheHeadBendsFromStillAreNoWalk(string name)
+        {
+            var bends = BumpsThenBend(5, 60);
+            var without = Walks(StepClocked(name, 0), bends);
+            Assert.That(without.Longest, Is.GreaterThan(30), "without the rule the bumps start a walk that lasts");
+            var with = Walks(StepClocked(name, HeadTilt.DefaultStillStartMaxBend), bends);
+            // The first bump comes with the head still level; its pitch passes the limit a quarter second into the bend (over
+            // BendMean), and the next reading of the head (every EveryWindows) withdraws the walk.
+            Assert.That(with.Longest, Is.LessThan(35), "withdrawn within 0.35 s, if started at all");
+            Assert.That(with.Walking, Is.LessThan(without.Walking / 2));
+        }
+
+        [TestCase("thr")]
+        [TestCase("cor")]
+        public void TheSameBumpsWithTheHeadLevelWalkAsBefore(string name)
+        {
+            var level = BumpsThenBend(5, 0);
+            var without = Walks(StepClocked(name, 0), level);
+            var with = Walks(StepClocked(name, HeadTilt.DefaultStillStartMaxBend), level);
+            Assert.That(without.Walking, Is.GreaterThan(300), "the bumps walk");
+            Assert.That(with.Walking, Is.EqualTo(without.Walking));
+            Assert.That(with.First, Is.EqualTo(without.First), "no later start");
+        }
+
+        /// <summary>A model the bumps fool: walking (the stride's segments in order, 1.1-s stride) for the first 1.2 s of each cycle, standing otherwise.</summary>
+        sealed class FooledByTheBumps : ILearnedEvaluator
+        {
+            readonly LearnedClassifier classifier;
+            readonly bool votes;
+            public double Time;
+
+            public FooledByTheBumps(LearnedClassifier classifier, bool votes)
+            {
+                this.classifier = classifier;
+                this.votes = votes;
+            }
+
+            public void Evaluate(double[] features, int windows, double[] scores)
+            {
+                var segments = classifier.Segments;
+                int classes = segments.ClassCount;
+                double c = (Time - First) % Cycle;
+                int shown = Time >= First && c < 1.2 ? (int)(c / 1.1 * segments.Count) % segments.Count : segments.StandingClass;
+                for (int k = 0; k < classes; k++) scores[k] = votes ? (k == shown ? 10 : 0) : (k == shown ? 0.999 : 0.001 / (classes - 1));
+            }
+        }
+
+        static LearnedClassifier Learned(bool svm, double maxBend)
+        {
+            var models = Models;
+            var filter = svm ? SvmClassifier.DefaultFilter() : new PhaseFilterSettings();
+            filter.StillStartMaxBend = maxBend;
+            LearnedClassifier learned = svm ? new SvmClassifier(models.Svm, filter) : new BlstmClassifier(models.Blstm, filter);
+            learned.Gate = null;
+            return learned;
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void TheLearnedClassifiersWithdrawAWalkTheHeadBendsFromStill(bool svm)
+        {
+            (int Walking, int Longest, double First) Run(double maxBend, double degrees)
+            {
+                var learned = Learned(svm, maxBend);
+                var fooled = new FooledByTheBumps(learned, svm);
+                learned.Evaluator = fooled;
+                return Walks(learned, BumpsThenBend(5, degrees), t => fooled.Time = t);
+            }
+            var without = Run(0, 60);
+            Assert.That(without.Longest, Is.GreaterThan(40), "without the rule the model's walk lasts until the tilt's own limit");
+            var with = Run(HeadTilt.DefaultStillStartMaxBend, 60);
+            Assert.That(with.Longest, Is.LessThan(without.Longest / 2));
+            var level = Run(HeadTilt.DefaultStillStartMaxBend, 0);
+            Assert.That(level.Walking, Is.EqualTo(Run(0, 0).Walking), "the head level: walking as without the rule");
+        }
+    }
+}
