@@ -183,7 +183,7 @@ namespace HeadGait.Cli
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
         /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels,
-        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -206,6 +206,7 @@ namespace HeadGait.Cli
                     else if (key.StartsWith("gate-cap=", StringComparison.Ordinal)) a.MaxGateShift = Number(key.Substring(9));
                     else if (key.StartsWith("shift-cap=", StringComparison.Ordinal)) a.LearnedShiftCap = Number(key.Substring(10));
                     else if (key.StartsWith("shift-prior=", StringComparison.Ordinal)) a.LearnedShiftPrior = Number(key.Substring(12));
+                    else if (key.StartsWith("template-steps=", StringComparison.Ordinal)) a.CorTemplateSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(15)));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
                         switch (key)
@@ -221,7 +222,7 @@ namespace HeadGait.Cli
                             case "learned-channels": a.LearnedChannelGains = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, prior=STEPS, margin=SHARE, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, prior=STEPS, margin=SHARE, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }

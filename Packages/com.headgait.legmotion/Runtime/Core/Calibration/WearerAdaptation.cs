@@ -9,6 +9,14 @@ namespace HeadGait.Calibration
     {
         /// <summary>Add the wearer's own mean step in front of COR's trained templates.</summary>
         public bool CorTemplate = true;
+        /// <summary>Steps from which a walk adds the wearer's own step to COR (<see cref="CorTemplate"/>); fewer: COR as trained.</summary>
+        public int CorTemplateSteps = WearerAdaptation.MinSteps;
+        /// <summary>
+        /// Self-supervised, the wearer's own step needs this many sure steps: a step averaged from six contacts COR itself
+        /// found matched that style's bows and waves (bn1 *chimpira*: gestures shown as walking 8.0 to 9.6 %, misclassified
+        /// 17.9 to 19.2 %), while nine gave the *childish* and *musical* styles 7-8 points (chosen on those held-out styles).
+        /// </summary>
+        public const int SelfSupervisedTemplateSteps = 8;
         /// <summary>Recalibrate COR's correlation threshold and contact lags on the walk whatever its length (else only from <see cref="CorThresholdSteps"/>).</summary>
         public bool CorThreshold;
         /// <summary>
@@ -44,7 +52,7 @@ namespace HeadGait.Calibration
         /// 23.5 to 23.9 %), and the learned gate stays, as the sure stretches are where the wearer's steps were clearest.
         /// </summary>
         public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised
-            ? new AdaptationSettings { Threshold = false, LearnedGate = false, LearnedRefit = false }
+            ? new AdaptationSettings { Threshold = false, LearnedGate = false, LearnedRefit = false, CorTemplateSteps = SelfSupervisedTemplateSteps }
             : new AdaptationSettings();
 
         /// <summary>Steps at which THR's refitted values and the trained ones weigh the same (shrinks a short walk's fit towards training).</summary>
@@ -122,16 +130,17 @@ namespace HeadGait.Calibration
             var baseThr = models.Threshold;
             var map = baseCor.PhaseMap;
 
+            bool ownStep = a.CorTemplate && steps >= a.CorTemplateSteps;
             var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseCor.Gate;
             var templates = new List<StepTemplate>();
-            if (a.CorTemplate) templates.AddRange(CorrelationTemplate.Train(training, map, corGate, 1).Templates);
+            if (ownStep) templates.AddRange(CorrelationTemplate.Train(training, map, corGate, 1).Templates);
             foreach (var t in baseCor.Templates)
                 if (templates.Count < 16) templates.Add(t);
             var cor = baseCor.With(templates: templates, gate: corGate);
             // Candidates, from the least refitted: the wearer's step alone (its lag the trained templates' median), then
             // with the threshold, lags and clock lead recalibrated on the walk (a long walk's, or where asked).
             var corCandidates = new List<CorrelationTemplate>();
-            if (a.CorTemplate)
+            if (ownStep)
             {
                 var lags = new List<double>();
                 foreach (var t in baseCor.Templates) lags.Add(t.ContactLag);
@@ -142,13 +151,13 @@ namespace HeadGait.Calibration
             bool refitThreshold = a.CorThreshold || steps >= a.CorThresholdSteps, refitLead = a.CorLead || steps >= a.CorThresholdSteps;
             if (refitThreshold || refitLead)
             {
-                var refit = a.CorTemplate ? cor : baseCor.With(gate: corGate);
+                var refit = ownStep ? cor : baseCor.With(gate: corGate);
                 if (refitThreshold)
                 {
                     refit = CorrelationClassifier.Calibrate(refit, training);
                     refit = refit.With(minCorrelation: Math.Max(refit.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
                 }
-                else if (a.CorTemplate) refit = corCandidates[0];
+                else if (ownStep) refit = corCandidates[0];
                 if (refitLead)
                 {
                     var fitted = refit;
