@@ -25,7 +25,7 @@ namespace HeadGait
         public bool Bends(double maxBend) => maxBend > 0 && BendFromStill > maxBend;
 
         /// <summary>
-        /// Whether a walk starting now starts from a still head (read still within <see cref="HeadTilt.StillRecent"/> s) that is
+        /// Whether a walk starting now starts from a still head (read still within <see cref="HeadTilt.StillRecent"/> s) that
         /// has bent away from it (<see cref="Bends"/>).
         /// </summary>
         public bool BentFromStill(double maxBend) => SinceStill <= HeadTilt.StillRecent && Bends(maxBend);
