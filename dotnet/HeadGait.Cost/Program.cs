@@ -317,6 +317,9 @@ namespace HeadGait.Cost
                     foreach (var c in classifiers) c.Classify(w);
                     return;
                 }
+                // The timed classifiers read a copy: the preprocessor's window keeps the rhythm one of them read
+                // (StepRhythm.Of), which would spare the next its cost; the pipeline rows below share it as an app does.
+                var copy = w.Clone();
                 Array.Copy(blstm.Standardise(w), blstmFeatures, blstmFeatures.Length);
                 Array.Copy(svm.Standardise(w), svmFeatures, width);
                 // Windows scored together (a 72 Hz frame holds one or two; four per pass) are timed in the rotation too,
@@ -331,7 +334,7 @@ namespace HeadGait.Cost
                     {
                         case 0: case 1: case 2: case 3:
                             a = ThreadClock.Now();
-                            classifiers[which].Classify(w);
+                            classifiers[which].Classify(copy);
                             b = ThreadClock.Now();
                             t[which].Add(round, Us(a, b));
                             break;
@@ -440,7 +443,7 @@ namespace HeadGait.Cost
                 var s = x.Summary();
                 Console.WriteLine($"{x.Name,-40} {s.min,8:F2} {s.median,8:F2} {s.p95,8:F2}   {s.roundLo:F2}-{s.roundHi:F2}");
             }
-            Console.WriteLine("(classify: features, network, time filter and decision, as the pipeline calls it; network: the model alone on standardised features)");
+            Console.WriteLine("(classify: features, network, time filter and decision, as the pipeline calls it, on a copy of the window (each pays its own step rhythm); network: the model alone on standardised features)");
             Console.WriteLine($"SVM windows scored together give the votes they get alone: largest difference {batchDiff:G3}");
             if (ortBlstm != null)
             {

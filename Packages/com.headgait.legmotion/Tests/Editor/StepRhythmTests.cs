@@ -101,6 +101,27 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void TheRhythmKeptInTheStreamedWindowIsThatWindowsOwnAtEachTolerance()
+        {
+            // The hold, the step clock and the gate ask the preprocessor's window in turn, at the gate's tolerance or none;
+            // each must get what a fresh copy of that fill measures, never a reading of the fill before or of the other tolerance.
+            var tilted = RecordingAugmentation.Tilted(TestData.Eval("walk_straight"));
+            double? level = WindowLevel.ToleranceDegrees;
+            int differing = 0;
+            var readings = TestData.PerWindow(tilted, StepRhythm.HistorySamples, w =>
+            {
+                var copy = w.Clone();
+                var asked = new[] { StepRhythm.Of(w, level), StepRhythm.Of(w, null), StepRhythm.Of(w, null), StepRhythm.Of(w, level) };
+                var fresh = new[] { StepRhythm.Of(copy, level), StepRhythm.Of(copy, null), StepRhythm.Of(copy, null), StepRhythm.Of(copy, level) };
+                if (!fresh[0].Equals(fresh[1])) differing++;
+                return (asked, fresh);
+            });
+            Assert.That(readings.Count, Is.GreaterThan(100));
+            foreach (var (asked, fresh) in readings) Assert.That(asked, Is.EqualTo(fresh));
+            Assert.That(differing, Is.GreaterThan(readings.Count / 2), "levelling changes the tilted walk's rhythm, so a reading of the other tolerance would show");
+        }
+
+        [Test]
         public void TooShortAHistoryHasNoRhythm()
         {
             var walk = TestData.Eval("walk_straight");

@@ -92,8 +92,21 @@ namespace HeadGait
         /// <summary>
         /// Measures the rhythm over the window's newest 2.5 s, the lateral and forward channels levelled beyond
         /// <paramref name="levelTolerance"/> degrees (<see cref="WindowLevel"/>, over the same span; null: as the head frame gives them). A window with less valid history has no rhythm (<see cref="Period"/> 0).
+        /// Measured once per fill of the preprocessor's window and tolerance (<see cref="SignalWindow.Rhythm"/>), however many ask.
         /// </summary>
         public static StepRhythm Of(SignalWindow w, double? levelTolerance = null)
+        {
+            if (!w.KeepsRhythm) return Measure(w, levelTolerance);
+            if (!w.HasRhythm || w.RhythmTolerance != levelTolerance)
+            {
+                w.Rhythm = Measure(w, levelTolerance);
+                w.RhythmTolerance = levelTolerance;
+                w.HasRhythm = true;
+            }
+            return w.Rhythm;
+        }
+
+        static StepRhythm Measure(SignalWindow w, double? levelTolerance)
         {
             int need = HistoryCount(w.SampleRate);
             if (need < 4 || Math.Min(w.Count, w.Length) < need) return default;

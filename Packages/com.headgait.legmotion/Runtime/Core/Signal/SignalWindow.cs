@@ -44,6 +44,20 @@ namespace HeadGait
         /// <summary>Index of the newest sample on the resampled grid since the stream (or the last gap) began.</summary>
         public long EndIndex { get; internal set; }
 
+        /// <summary>
+        /// The step rhythm read of this fill of the window (<see cref="StepRhythm.Of"/>) and the level tolerance it was read
+        /// at: the rhythm hold, the step clock and the walking gate ask for the same window's rhythm, and it is the costliest
+        /// read. Kept only in the window the preprocessor fills, which forgets it on every fill (<see cref="Refilled"/>);
+        /// one filled by hand may change unseen.
+        /// </summary>
+        internal bool KeepsRhythm;
+        internal bool HasRhythm;
+        internal double? RhythmTolerance;
+        internal StepRhythm Rhythm;
+
+        /// <summary>The samples changed: forget the rhythm read of the last fill.</summary>
+        internal void Refilled() => HasRhythm = false;
+
         public SignalWindow Clone()
         {
             var w = new SignalWindow(Length, SampleRate) { EndTime = EndTime, EndIndex = EndIndex, Count = Count };

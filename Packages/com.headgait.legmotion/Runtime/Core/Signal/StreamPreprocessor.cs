@@ -136,7 +136,7 @@ namespace HeadGait
             latRing = new double[capacity];
             fwdRing = new double[capacity];
             vertRing = new double[capacity];
-            window = new SignalWindow(capacity, settings.SampleRate);
+            window = new SignalWindow(capacity, settings.SampleRate) { KeepsRhythm = true };
             suspects = new ImuSample[settings.RebaseSamples];
             dt = 1.0 / settings.SampleRate;
         }
@@ -399,6 +399,7 @@ namespace HeadGait
             window.EndTime = t;
             window.EndIndex = filled - 1;
             window.Count = (int)Math.Min(filled, n);
+            window.Refilled();
             onWindow?.Invoke(window);
         }
     }
