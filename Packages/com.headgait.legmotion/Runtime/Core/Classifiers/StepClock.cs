@@ -103,6 +103,22 @@ namespace HeadGait
         /// </summary>
         public double StillStartMaxBend = HeadTilt.DefaultStillStartMaxBend;
 
+        /// <summary>
+        /// Contacts a walk that starts from a still head (<see cref="HeadTilt.FollowStill"/>, read while
+        /// <see cref="StillStartMaxBend"/> is on) after <see cref="StillStartContactsAfterStanding"/> seconds without a walk
+        /// takes before it is shown, at step-like intervals; such a walk does not start on a whole step recognised in one
+        /// window (<see cref="StepClock.StartsOnContactsOnly"/>). Standing still, then a bump like a step, is how most of COR's
+        /// false walks in still activities began (a single step's match, or its onset start), and they rarely took a second
+        /// step. 0 or 1: as any walk (<see cref="ContactsToStart"/>). COR sets 2 (see there).
+        /// </summary>
+        public int StillStartContacts = 0;
+
+        /// <summary>
+        /// Seconds without a walk shown before <see cref="StillStartContacts"/> applies: a walker who pauses, head still, and
+        /// walks on starts as before (walking files: 2 s cost COR 0.9 points of walking shown, 3 s and more none).
+        /// </summary>
+        public double StillStartContactsAfterStanding = 0;
+
         /// <summary>Windows between two readings of the head's rhythm (<see cref="RhythmStepShare"/>): it changes slowly, and a reading costs.</summary>
         public const int RhythmEveryWindows = 10;
 
@@ -251,6 +267,7 @@ namespace HeadGait
         readonly HeadTilt still = new HeadTilt(); // the last still head, read with the rhythm (StillStartMaxBend)
         bool startsFromStill;         // whether the walk (or, while standing, one starting now) starts from a still head
         double probationUntil;        // until when a walk from a still head is withdrawn on a bend; NaN before its start is read
+        bool boutFromStill;           // whether the bout's first contact came from a still head (StillStartContacts)
 
         public StepClock(PhaseMap map, StepClockSettings settings = null)
         {
@@ -290,6 +307,7 @@ namespace HeadGait
             still.Reset();
             startsFromStill = false;
             probationUntil = double.NaN;
+            boutFromStill = false;
         }
 
         /// <summary>The step period (s) the head's rhythm showed at its last reading; 0 when it showed none.</summary>
@@ -422,6 +440,7 @@ namespace HeadGait
                 // one being the same side (or for it).
                 sideEvidence = leftEvidence + (steps % 2 == 1 ? -1 : 1) * settings.SideMemory * sideEvidence;
             }
+            if (contactsInBout == 1) boutFromStill = FromStill(time);
             lastFoot = sideEvidence >= 0 ? Foot.Left : Foot.Right;
             lastContact = time;
             return true;
@@ -450,8 +469,18 @@ namespace HeadGait
             lastContact = double.NegativeInfinity;
         }
 
+        /// <summary>
+        /// Whether a walk may start now only on contacts (<see cref="StepClockSettings.StillStartContacts"/>): none is under
+        /// way and one starting now starts from a still head.
+        /// </summary>
+        public bool StartsOnContactsOnly(double now) => FromStill(now) && !IsWalking(now);
+
+        bool FromStill(double now) => settings.StillStartContacts > 1 && startsFromStill && now - lastWalking >= settings.StillStartContactsAfterStanding;
+
+        int ContactsNeeded => boutFromStill ? Math.Max(settings.ContactsToStart, settings.StillStartContacts) : settings.ContactsToStart;
+
         public bool IsWalking(double now)
-            => contactsInBout >= settings.ContactsToStart && (now - lastContact <= settings.StandingAfterPeriods * period
+            => contactsInBout >= ContactsNeeded && (now - lastContact <= settings.StandingAfterPeriods * period
                 || settings.HoldOnRhythm && rhythmGoesOn && now - lastContact <= settings.RhythmHoldPeriods * period);
 
         /// <summary>Stride position now: the last contact's foot landing, advanced at the step period.</summary>
