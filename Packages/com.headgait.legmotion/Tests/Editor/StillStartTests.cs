@@ -19,7 +19,7 @@ namespace HeadGait.Tests
         /// the head swaying to alternate sides, while it pitches forward by <paramref name="degrees"/> over 0.8 s from the first
         /// bump on, stays down a second and comes up over a second. <paramref name="degrees"/> 0: the bumps with the head level.
         /// </summary>
-        static Recording BumpsThenBend(int times, double degrees)
+        static Recording BumpsThenBend(int times, double degrees, int bumps = 3)
         {
             var rows = new List<RecordedSample>();
             for (int i = 0; i < (First + times * Cycle) * 100; i++)
@@ -31,12 +31,12 @@ namespace HeadGait.Tests
                     if (c < 0.8) pitch = c / 0.8;
                     else if (c < 1.8) pitch = 1;
                     else if (c < 2.8) pitch = 1 - (c - 1.8);
-                    for (int k = 0; k < 3; k++)
+                    for (int k = 0; k < bumps; k++)
                     {
                         double d = c - k * 0.5;
                         bump += 3 * Math.Exp(-d * d / (2 * 0.04 * 0.04));
                     }
-                    if (c < 1.5) sway = 0.8 * Math.Sin(Math.PI * c / 0.5);
+                    if (c < 0.5 * bumps) sway = 0.8 * Math.Sin(Math.PI * c / 0.5);
                 }
                 double angle = pitch * degrees * Math.PI / 180, a = G + bump;
                 rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), sway + 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
@@ -46,8 +46,11 @@ namespace HeadGait.Tests
 
         static GaitModels Models => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
 
-        /// <summary>THR or COR as shipped, but with a walking gate that passes everything (the bumps are the gate's to judge otherwise).</summary>
-        static IGaitClassifier StepClocked(string name, double maxBend)
+        /// <summary>
+        /// THR or COR as shipped, but with a walking gate that passes everything (the bumps are the gate's to judge otherwise);
+        /// <paramref name="stillContacts"/> false turns <see cref="StepClockSettings.StillStartContacts"/> off.
+        /// </summary>
+        static IGaitClassifier StepClocked(string name, double maxBend, bool stillContacts = true)
         {
             if (name == "thr")
             {
@@ -57,6 +60,7 @@ namespace HeadGait.Tests
             }
             var settings = new CorrelationSettings();
             settings.Clock.StillStartMaxBend = maxBend;
+            if (!stillContacts) settings.Clock.StillStartContacts = 0;
             return new CorrelationClassifier(Models.Correlation.With(gate: WalkingGate.Open), settings);
         }
 
@@ -101,10 +105,25 @@ namespace HeadGait.Tests
         {
             var level = BumpsThenBend(5, 0);
             var without = Walks(StepClocked(name, 0), level);
-            var with = Walks(StepClocked(name, HeadTilt.DefaultStillStartMaxBend), level);
+            var with = Walks(StepClocked(name, HeadTilt.DefaultStillStartMaxBend, stillContacts: false), level);
             Assert.That(without.Walking, Is.GreaterThan(300), "the bumps walk");
             Assert.That(with.Walking, Is.EqualTo(without.Walking));
             Assert.That(with.First, Is.EqualTo(without.First), "no later start");
+        }
+
+        /// <summary>
+        /// COR's false walks in still activities mostly began with a step-like bump from a still head and took no second step
+        /// (<see cref="StepClockSettings.StillStartContacts"/>): three bumps with the head level, from still, are no walk (COR
+        /// takes one contact of them; its onset start took the walk before).
+        /// </summary>
+        [Test]
+        public void AFewBumpsFromAStillHeadAreNoCorWalk()
+        {
+            var level = BumpsThenBend(5, 0);
+            var without = Walks(StepClocked("cor", HeadTilt.DefaultStillStartMaxBend, stillContacts: false), level);
+            Assert.That(without.Walking, Is.GreaterThan(300), "without the rule the bumps walk");
+            var with = Walks(StepClocked("cor", HeadTilt.DefaultStillStartMaxBend), level);
+            Assert.That(with.Walking, Is.EqualTo(0));
         }
 
         /// <summary>A model the bumps fool: walking (the stride's segments in order, 1.1-s stride) for the first 1.2 s of each cycle, standing otherwise.</summary>
