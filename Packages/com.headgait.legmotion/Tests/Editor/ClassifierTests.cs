@@ -452,7 +452,10 @@ namespace HeadGait.Tests
             // The paper's rule (r > 0.9, no tracking margin) or any other replaces the learned threshold: stricter means fewer contacts taken.
             int Contacts(double threshold)
             {
-                var cor = new CorrelationClassifier(TestData.Template, new CorrelationSettings { MinCorrelationOverride = threshold, TrackingMargin = 0 });
+                // The start from a still head (StillStartContacts) aside: its first contact may come earlier at a looser threshold.
+                var settings = new CorrelationSettings { MinCorrelationOverride = threshold, TrackingMargin = 0 };
+                settings.Clock.StillStartContacts = 0;
+                var cor = new CorrelationClassifier(TestData.Template, settings);
                 int n = 0;
                 cor.ContactDetected += (t, e, r, k) =>
                 {

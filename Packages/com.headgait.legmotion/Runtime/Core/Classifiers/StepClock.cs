@@ -452,12 +452,19 @@ namespace HeadGait
         /// </summary>
         public void Start(double contactTime, double leftEvidence, double stepPeriod)
         {
+            // A walk from a still head waiting for its next contact (StillStartContacts): a whole step recognised is one.
+            if (boutFromStill && contactsInBout >= 1 && contactTime - lastContact <= settings.MaxStepInterval)
+            {
+                Contact(contactTime, leftEvidence);
+                return;
+            }
             lastContact = contactTime;
             sideEvidence = leftEvidence;
             lastFoot = leftEvidence >= 0 ? Foot.Left : Foot.Right;
             period = stepPeriod;
             periodMeasured = false;
             contactsInBout = Math.Max(contactsInBout, settings.ContactsToStart);
+            boutFromStill = false;
         }
 
         /// <summary>Ends the walking bout now (the head has stopped moving like walking): the next contact starts a new one.</summary>
@@ -473,7 +480,7 @@ namespace HeadGait
         /// Whether a walk may start now only on contacts (<see cref="StepClockSettings.StillStartContacts"/>): none is under
         /// way and one starting now starts from a still head.
         /// </summary>
-        public bool StartsOnContactsOnly(double now) => FromStill(now) && !IsWalking(now);
+        public bool StartsOnContactsOnly(double now) => !IsWalking(now) && FromStill(now);
 
         bool FromStill(double now) => settings.StillStartContacts > 1 && startsFromStill && now - lastWalking >= settings.StillStartContactsAfterStanding;
 
