@@ -108,8 +108,8 @@ namespace HeadGait
         /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
         /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>). A walk from a still head after 5 s without one takes two
         /// contacts (<see cref="StepClockSettings.StillStartContacts"/>): on the real glasses (realworld, avatar; in-sample)
-        /// standing / sitting / picking up shown as walking 1.7 / 0.5 / 4.9 to 0.8 / 0.2 / 1.7 %, walking 92.4 % both, timed
-        /// up-and-go 69.8 to 69.3 % (see the measurements log).
+        /// standing / sitting / picking up shown as walking 1.7 / 0.5 / 4.9 to 1.0 / 0.2 / 3.3 %, walking 92.4 % both, timed
+        /// up-and-go 69.8 to 69.4 % (see the measurements log); a generated walker, still before it, starts a step later.
         /// </summary>
         public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, StillStartContactsAfterStanding = 5 };
     }
