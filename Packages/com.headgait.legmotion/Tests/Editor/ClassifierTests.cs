@@ -452,10 +452,7 @@ namespace HeadGait.Tests
             // The paper's rule (r > 0.9, no tracking margin) or any other replaces the learned threshold: stricter means fewer contacts taken.
             int Contacts(double threshold)
             {
-                // The start from a still head (StillStartContacts) aside: its first contact may come earlier at a looser threshold.
-                var settings = new CorrelationSettings { MinCorrelationOverride = threshold, TrackingMargin = 0 };
-                settings.Clock.StillStartContacts = 0;
-                var cor = new CorrelationClassifier(TestData.Template, settings);
+                var cor = new CorrelationClassifier(TestData.Template, new CorrelationSettings { MinCorrelationOverride = threshold, TrackingMargin = 0 });
                 int n = 0;
                 cor.ContactDetected += (t, e, r, k) =>
                 {

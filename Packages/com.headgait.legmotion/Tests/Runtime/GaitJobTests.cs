@@ -31,14 +31,6 @@ namespace HeadGait.Tests
 
         static IGaitClassifier Cor() => new CorrelationClassifier(Template);
 
-        /// <summary>COR starting on the generated walker's first step (its still stand would hold the start to the second, <see cref="StepClockSettings.StillStartContacts"/>).</summary>
-        static IGaitClassifier CorFirstStep()
-        {
-            var settings = new CorrelationSettings();
-            settings.Clock.StillStartContacts = 0;
-            return new CorrelationClassifier(Template, settings);
-        }
-
         static IGaitClassifier Blstm() => new BlstmClassifier(ModelFile.Load(Path.Combine(ModelsFolder, GaitModels.BlstmFile)));
 
         /// <summary>Stand, walk (with a turn), stand, walk: every animator state is visited.</summary>
@@ -225,7 +217,7 @@ namespace HeadGait.Tests
         public void AFramePublishesTheSamplesHandedOverBeforeIt()
         {
             var samples = Stream(irregular: false, seconds: 6);
-            var runner = new GaitBatchRunner(new GaitPipeline(CorFirstStep()));
+            var runner = new GaitBatchRunner(new GaitPipeline(Cor()));
             var scheduler = new CountingScheduler(runner);
 
             foreach (var s in samples) if (s.Time <= 3) runner.Push(s);

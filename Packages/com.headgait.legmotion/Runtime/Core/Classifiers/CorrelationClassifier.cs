@@ -106,12 +106,9 @@ namespace HeadGait
         /// (<see cref="StepClockSettings.PoseFitDelay"/>). Leave-one-style-out on the pose recordings, 0 / 5 / 10 / 15 / 20 /
         /// 25 ms: 25.5 / 24.9 / 24.7 / 24.9 / 25.3 / 26.2 % (the same order at 72, 90 and 120 Hz; step recall 98.3 %
         /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
-        /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>). A walk from a still head after 5 s without one takes two
-        /// contacts (<see cref="StepClockSettings.StillStartContacts"/>): on the real glasses (realworld, avatar; in-sample)
-        /// standing / sitting / picking up shown as walking 1.7 / 0.5 / 4.9 to 1.0 / 0.2 / 3.3 %, walking 92.4 % both, timed
-        /// up-and-go 69.8 to 69.4 % (see the measurements log); a generated walker, still before it, starts a step later.
+        /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, StillStartContactsAfterStanding = 5 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75 };
     }
 
     /// <summary>
