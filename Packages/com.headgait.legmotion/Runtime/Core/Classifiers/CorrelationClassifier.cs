@@ -334,7 +334,7 @@ namespace HeadGait
                     ContactDetected?.Invoke(contact, recentEvidence[centre], r, t);
                 }
             }
-            if (!clock.IsWalking(now) && settings.StartMargin >= 0 && (moving || firstStep)) TryStart(window, now, valid);
+            if (!clock.IsWalking(now) && settings.StartMargin >= 0 && (moving || firstStep) && !clock.StartsOnContactsOnly(now)) TryStart(window, now, valid);
             clock.FollowFirstStep(now, firstStep, walkingBefore, gateLogOdds);
             return clock.Predict(now, Math.Max(0, best));
         }
