@@ -54,7 +54,6 @@ namespace HeadGait.Unity
         ImuSample[] batch;
         int batchCount;
 
-        int batchGeneration;
         double sourceLag;
         double lastSamples = double.NaN; // the frame time samples last came, for the silence rule
         string warning;
