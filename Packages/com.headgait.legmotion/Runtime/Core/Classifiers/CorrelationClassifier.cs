@@ -108,7 +108,7 @@ namespace HeadGait
         /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
         /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2 };
     }
 
     /// <summary>
@@ -323,7 +323,8 @@ namespace HeadGait
                 int t = recentTemplate[centre];
                 double contact = recentTime[centre] - template.Templates[t].ContactLag;
                 double since = contact - clock.LastContactTime;
-                bool due = clock.IsWalking(now) && since >= settings.DueFrom * clock.StepPeriod && since <= settings.DueUntil * clock.StepPeriod;
+                // A walk not shown yet (StepClockSettings.StillStartContacts) is confirmed only by a full match.
+                bool due = clock.IsWalking(now) && !clock.Hidden(now) && since >= settings.DueFrom * clock.StepPeriod && since <= settings.DueUntil * clock.StepPeriod;
                 bool peak = r >= (due ? minCorrelation - settings.TrackingMargin : minCorrelation) && recentSpan[centre] >= settings.MinStepSpan;
                 for (int i = 0; peak && i < recentR.Length; i++)
                     if (i != centre && (recentR[i] > r || (recentR[i] == r && i < centre))) peak = false;
@@ -334,7 +335,7 @@ namespace HeadGait
                     ContactDetected?.Invoke(contact, recentEvidence[centre], r, t);
                 }
             }
-            if (!clock.IsWalking(now) && settings.StartMargin >= 0 && (moving || firstStep) && !clock.StartsOnContactsOnly(now)) TryStart(window, now, valid);
+            if (!clock.IsWalking(now) && settings.StartMargin >= 0 && (moving || firstStep)) TryStart(window, now, valid);
             clock.FollowFirstStep(now, firstStep, walkingBefore, gateLogOdds);
             return clock.Predict(now, Math.Max(0, best));
         }

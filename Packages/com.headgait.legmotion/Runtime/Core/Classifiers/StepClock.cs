@@ -106,20 +106,21 @@ namespace HeadGait
         /// <summary>
         /// Contacts a walk that starts from a still head (<see cref="HeadTilt.FollowStill"/>, read while
         /// <see cref="StillStartMaxBend"/> is on) after <see cref="StillStartContactsAfterStanding"/> seconds without a walk
-        /// takes before it is shown, at step-like intervals; such a walk does not start on a whole step recognised in one
-        /// window (<see cref="StepClock.StartsOnContactsOnly"/>). Standing still, then a bump like a step, is how most of COR's
-        /// false walks in still activities began (a single step's match, or its onset start), and they rarely took a second
-        /// step. 0 or 1: as any walk (<see cref="ContactsToStart"/>). Off: COR at 2 on the real glasses (realworld, avatar,
-        /// in-sample) standing / sitting / picking up shown as walking 1.7 / 0.5 / 4.9 to 1.0 / 0.2 / 3.3 %, walking 92.4 %
-        /// both, but `replay` (generated walkers) 16.9 / 18.8 to 20.7 / 22.7 % wrong, walk_straight too (not traced; see the
-        /// measurements log).
+        /// takes before it is shown, its start (a contact, or a whole step recognised in one window) counted. The clock walks
+        /// meanwhile, unseen, so the contact search follows its step as a shown walk's and the walk is shown with the phase
+        /// and foot it has without the rule (kept standing instead, COR searched every step length, found a generated
+        /// walker's next contacts up to a third of a stride off and `replay` went 16.9 to 20.7 % wrong). Standing still, then
+        /// a bump like a step, is how most of COR's false walks in still activities began, and they rarely took a second
+        /// step. 0 or 1: as any walk (<see cref="ContactsToStart"/>). COR ships 2: real glasses (realworld, avatar, in-sample)
+        /// standing / sitting / picking up shown as walking 1.7 / 0.5 / 4.9 to 1.2 / 0.3 / 3.8 %, walking 92.4 % both; TUG
+        /// starts within 0.3 s of the first step 45.5 to 38.2 %; `replay` unchanged (its walks start within 5 s of the stream's start).
         /// </summary>
         public int StillStartContacts = 0;
 
         /// <summary>
-        /// Seconds without a walk shown before <see cref="StillStartContacts"/> applies: a walker who pauses, head still, and
-        /// walks on starts as before (glasses walking files: 2 s cost COR 0.9 points of walking shown, 3 s and more none; 8 s
-        /// and more let more false walks through).
+        /// Seconds without a walk shown before <see cref="StillStartContacts"/> applies, counted from the clock's first
+        /// still-head reading when it has shown none: a walker who pauses, head still, and walks on starts as before (glasses
+        /// walking files: 2 s cost COR 0.9 points of walking shown, 3 s and more none; 8 s and more let more false walks through).
         /// </summary>
         public double StillStartContactsAfterStanding = 5;
 
@@ -271,7 +272,8 @@ namespace HeadGait
         readonly HeadTilt still = new HeadTilt(); // the last still head, read with the rhythm (StillStartMaxBend)
         bool startsFromStill;         // whether the walk (or, while standing, one starting now) starts from a still head
         double probationUntil;        // until when a walk from a still head is withdrawn on a bend; NaN before its start is read
-        bool boutFromStill;           // whether the bout's first contact came from a still head (StillStartContacts)
+        double firstSeen;             // the first still-head reading's time (StillStartContactsAfterStanding counts from it); NaN before
+        int hiddenContacts;           // contacts a walk from a still head still needs before it is shown (StillStartContacts)
 
         public StepClock(PhaseMap map, StepClockSettings settings = null)
         {
@@ -311,7 +313,8 @@ namespace HeadGait
             still.Reset();
             startsFromStill = false;
             probationUntil = double.NaN;
-            boutFromStill = false;
+            hiddenContacts = 0;
+            firstSeen = double.NaN;
         }
 
         /// <summary>The step period (s) the head's rhythm showed at its last reading; 0 when it showed none.</summary>
@@ -346,6 +349,7 @@ namespace HeadGait
         void FollowStill(SignalWindow window, bool readStill)
         {
             double now = window.EndTime;
+            if (double.IsNaN(firstSeen)) firstSeen = now;
             still.FollowStill(window, readStill);
             var reading = still.Reading;
             if (!IsWalking(now))
@@ -440,11 +444,12 @@ namespace HeadGait
                 }
                 contactsInBout++;
                 if (contactsInBout >= 2) firstStep.Confirm();
+                if (hiddenContacts > 0) hiddenContacts--;
                 // The previous contact was the other foot (or, steps later, the same): its evidence counts against this
                 // one being the same side (or for it).
                 sideEvidence = leftEvidence + (steps % 2 == 1 ? -1 : 1) * settings.SideMemory * sideEvidence;
             }
-            if (contactsInBout == 1) boutFromStill = FromStill(time);
+            if (contactsInBout == 1) hiddenContacts = FromStill(time) ? settings.StillStartContacts - 1 : 0;
             lastFoot = sideEvidence >= 0 ? Foot.Left : Foot.Right;
             lastContact = time;
             return true;
@@ -456,19 +461,13 @@ namespace HeadGait
         /// </summary>
         public void Start(double contactTime, double leftEvidence, double stepPeriod)
         {
-            // A walk from a still head waiting for its next contact (StillStartContacts): a whole step recognised is one.
-            if (boutFromStill && contactsInBout >= 1 && contactTime - lastContact <= settings.MaxStepInterval)
-            {
-                Contact(contactTime, leftEvidence);
-                return;
-            }
+            hiddenContacts = FromStill(contactTime) ? settings.StillStartContacts - 1 : 0;
             lastContact = contactTime;
             sideEvidence = leftEvidence;
             lastFoot = leftEvidence >= 0 ? Foot.Left : Foot.Right;
             period = stepPeriod;
             periodMeasured = false;
             contactsInBout = Math.Max(contactsInBout, settings.ContactsToStart);
-            boutFromStill = false;
         }
 
         /// <summary>Ends the walking bout now (the head has stopped moving like walking): the next contact starts a new one.</summary>
@@ -478,20 +477,19 @@ namespace HeadGait
             contactsInBout = 0;
             periodMeasured = false;
             lastContact = double.NegativeInfinity;
+            hiddenContacts = 0;
         }
 
+        bool FromStill(double now) => settings.StillStartContacts > 1 && startsFromStill && now - Math.Max(lastWalking, firstSeen) >= settings.StillStartContactsAfterStanding;
+
         /// <summary>
-        /// Whether a walk may start now only on contacts (<see cref="StepClockSettings.StillStartContacts"/>): none is under
-        /// way and one starting now starts from a still head.
+        /// Whether the walk under way is not shown yet: it started from a still head and waits for its next contact
+        /// (<see cref="StepClockSettings.StillStartContacts"/>); the clock walks meanwhile.
         /// </summary>
-        public bool StartsOnContactsOnly(double now) => !IsWalking(now) && FromStill(now);
-
-        bool FromStill(double now) => settings.StillStartContacts > 1 && startsFromStill && now - lastWalking >= settings.StillStartContactsAfterStanding;
-
-        int ContactsNeeded => boutFromStill ? Math.Max(settings.ContactsToStart, settings.StillStartContacts) : settings.ContactsToStart;
+        public bool Hidden(double now) => hiddenContacts > 0 && IsWalking(now);
 
         public bool IsWalking(double now)
-            => contactsInBout >= ContactsNeeded && (now - lastContact <= settings.StandingAfterPeriods * period
+            => contactsInBout >= settings.ContactsToStart && (now - lastContact <= settings.StandingAfterPeriods * period
                 || settings.HoldOnRhythm && rhythmGoesOn && now - lastContact <= settings.RhythmHoldPeriods * period);
 
         /// <summary>Stride position now: the last contact's foot landing, advanced at the step period.</summary>
@@ -550,7 +548,7 @@ namespace HeadGait
         /// <summary>The prediction now; a walking stride position never steps back by less than <see cref="StepClockSettings.HoldBack"/>.</summary>
         public GaitPrediction Predict(double now, double confidence)
         {
-            if (!IsWalking(now))
+            if (!IsWalking(now) || hiddenContacts > 0)
             {
                 reported = double.NaN;
                 stance.Reset();
