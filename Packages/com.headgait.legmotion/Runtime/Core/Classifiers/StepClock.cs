@@ -267,9 +267,8 @@ namespace HeadGait
         double rhythmPeriod;          // the step period of the head's rhythm; 0 when it shows none
         bool rhythmGoesOn;            // whether that rhythm reaches into the newest step
         double lastRhythmPeriod;      // the last step period the rhythm showed (kept through turns and stops); 0 before one
-        double tiltChange;            // degrees the head's tilt moved over the newest HeadTilt.Span seconds
         int rhythmCountdown;
-        readonly HeadTilt still = new HeadTilt(); // the last still head, read with the rhythm (StillStartMaxBend)
+        readonly HeadTilt tilt = new HeadTilt(); // the tilt's movement and the last still head, read with the rhythm
         bool startsFromStill;         // whether the walk (or, while standing, one starting now) starts from a still head
         double probationUntil;        // until when a walk from a still head is withdrawn on a bend; NaN before its start is read
         double firstSeen;             // the first still-head reading's time (StillStartContactsAfterStanding counts from it); NaN before
@@ -306,11 +305,10 @@ namespace HeadGait
             rhythmPeriod = 0;
             rhythmGoesOn = false;
             lastRhythmPeriod = 0;
-            tiltChange = 0;
             rhythmCountdown = 0;
             firstStep.Reset();
             lastWalking = double.NegativeInfinity;
-            still.Reset();
+            tilt.Reset();
             startsFromStill = false;
             probationUntil = double.NaN;
             hiddenContacts = 0;
@@ -328,30 +326,30 @@ namespace HeadGait
         /// </summary>
         public void FollowRhythm(SignalWindow window, double? levelTolerance)
         {
-            if (settings.StillStartMaxBend > 0) FollowStill(window, rhythmCountdown <= 0);
+            bool readsStill = settings.StillStartMaxBend > 0;
+            if (readsStill || settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0) tilt.Follow(window, readsStill);
+            if (readsStill) FollowStill(window.EndTime);
             if (rhythmCountdown-- > 0) return;
             rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
             var rhythm = StepRhythm.Of(window, levelTolerance);
             rhythmPeriod = rhythm.ShowsStepPeriod ? rhythm.Period : 0;
             rhythmGoesOn = rhythm.HoldsWalk;
             if (rhythmPeriod > 0) lastRhythmPeriod = rhythmPeriod;
-            tiltChange = settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0 ? HeadTilt.ChangeOver(window, HeadTilt.Span) : 0;
-            if (settings.MaxWalkingTiltChange > 0 && tiltChange > settings.MaxWalkingTiltChange) Stop();
+            // The tilt was read this window too: HeadTilt.EveryWindows and RhythmEveryWindows count alike from Reset.
+            if (settings.MaxWalkingTiltChange > 0 && tilt.Change > settings.MaxWalkingTiltChange) Stop();
             double ratio = settings.RhythmPeriodRatio;
             if (ratio > 1 && rhythmPeriod > 0 && (period > ratio * rhythmPeriod || period * ratio < rhythmPeriod)) period = rhythmPeriod;
         }
 
         /// <summary>
-        /// Reads the still head (<see cref="HeadTilt.FollowStill"/>; whether it is still only with <paramref name="readStill"/>,
-        /// its bend every window); while standing, whether a walk starting now starts from it; a walk from it is withdrawn on
-        /// a bend within <see cref="HeadTilt.StillStartProbation"/> seconds of its start (<see cref="StepClockSettings.StillStartMaxBend"/>).
+        /// After the still head's reading (<see cref="HeadTilt.FollowStill"/>): while standing, whether a walk starting now
+        /// starts from it; a walk from it is withdrawn on a bend within <see cref="HeadTilt.StillStartProbation"/> seconds of
+        /// its start (<see cref="StepClockSettings.StillStartMaxBend"/>).
         /// </summary>
-        void FollowStill(SignalWindow window, bool readStill)
+        void FollowStill(double now)
         {
-            double now = window.EndTime;
             if (double.IsNaN(firstSeen)) firstSeen = now;
-            still.FollowStill(window, readStill);
-            var reading = still.Reading;
+            var reading = tilt.Reading;
             if (!IsWalking(now))
             {
                 startsFromStill = reading.SinceStill <= HeadTilt.StillRecent;
@@ -370,9 +368,9 @@ namespace HeadGait
         /// progress is not stopped by it.
         /// </summary>
         public bool StartBlocked(double now, double gateLogOdds)
-            => !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange
+            => !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange
                 || settings.StartNeedsGateScore && !(gateLogOdds > 0)
-                || startsFromStill && still.Reading.Bends(settings.StillStartMaxBend));
+                || startsFromStill && tilt.Reading.Bends(settings.StillStartMaxBend));
 
         /// <summary>
         /// Whether a contact now may start a provisional walk although the gate refuses (<see cref="FirstStepStartSettings"/>):
@@ -385,8 +383,8 @@ namespace HeadGait
         public bool MayStartOnFirstStep(double now, double gateLogOdds)
             => firstStep.Waiting && IsWalking(now)
                 ? gateLogOdds > -settings.FirstStep.Margin
-                : firstStep.Allows(IsWalking(now), gateLogOdds, now - lastWalking) && !(settings.MaxStartTiltChange > 0 && tiltChange > settings.MaxStartTiltChange)
-                    && !(startsFromStill && still.Reading.Bends(settings.StillStartMaxBend));
+                : firstStep.Allows(IsWalking(now), gateLogOdds, now - lastWalking) && !(settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange)
+                    && !(startsFromStill && tilt.Reading.Bends(settings.StillStartMaxBend));
 
         /// <summary>
         /// After each window's contacts: a walk that began this window on <see cref="MayStartOnFirstStep"/> (it did not walk
