@@ -57,6 +57,14 @@ namespace HeadGait
         public double Length(int k) => PhaseMap.Wrap(starts[(k + 1) % starts.Length] - starts[k] - 1e-12) + 1e-12;
         public double Center(int k) => PhaseMap.Wrap(starts[k] + 0.5 * Length(k));
 
+        /// <summary>The walking class whose segment holds stride position <paramref name="x"/> (wrapped).</summary>
+        public int At(double x)
+        {
+            for (int k = 0; k < starts.Length; k++)
+                if (PhaseMap.Wrap(x - Start(k)) < Length(k)) return k;
+            return 0;
+        }
+
         /// <summary>The class of a pair of labels: a segment, Standing, or -1 when the pair does not occur in this map's stride.</summary>
         public int ClassOf(GaitPhase leftPhase, GaitPhase rightPhase)
         {

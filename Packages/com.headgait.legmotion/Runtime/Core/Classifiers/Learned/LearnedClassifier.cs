@@ -381,7 +381,7 @@ namespace HeadGait
                 else if (now - carriedSince < filter.Settings.SwapCarrySteps * pace)
                 {
                     carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * pace));
-                    best = SegmentAt(carriedPosition);
+                    best = Segments.At(carriedPosition);
                     carried = true;
                 }
                 // else carried for SwapCarrySteps and still across the stride: the feet did swap, and the model's class shows.
@@ -483,14 +483,6 @@ namespace HeadGait
             bool behind = back >= 1 && back <= filterSettings.HoldBackSegments;
             swapped = !behind && ahead >= filterSettings.SwapSegments && back >= filterSettings.SwapSegments;
             return behind || swapped ? lastClass : best;
-        }
-
-        /// <summary>The stride segment holding stride position x.</summary>
-        int SegmentAt(double x)
-        {
-            for (int k = 0; k < Segments.Count; k++)
-                if (PhaseMap.Wrap(x - Segments.Start(k)) < Segments.Length(k)) return k;
-            return 0;
         }
 
         /// <summary>A foot lands when the class moves forward into a segment where that foot's stance begins.</summary>
