@@ -291,7 +291,7 @@ namespace HeadGait.Cost
             var classifiers = new IGaitClassifier[] { thr, cor, svm, blstm };
             int history = classifiers.Max(c => c.WindowLength);
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(history, new PreprocessorSettings().History) });
-            int width = svm.Features.Width, classes = svm.Segments.ClassCount;
+            int width = svm.Features.Width, classes = svm.Segments.ClassCount, pairs = svm.OutputCount;
             var t = new List<Times>
             {
                 new Times("THR classify", rounds), new Times("COR classify", rounds), new Times("SVM classify", rounds), new Times("BLSTM classify", rounds),
@@ -302,10 +302,11 @@ namespace HeadGait.Cost
             var blstmFeatures = new double[blstm.Features.Width];
             var svmFeatures = new double[width];
             var batch = new double[4 * width];
-            var batchScores = new double[4 * classes];
-            var pairScores = new double[2 * classes];
-            var singleVotes = new double[4 * classes];
-            var net = new double[classes];
+            var batchDecisions = new double[4 * pairs];
+            var pairDecisions = new double[2 * pairs];
+            var singleDecisions = new double[4 * pairs];
+            var net = new double[classes];       // the BLSTM network's probabilities
+            var svmDecision = new double[pairs]; // the SVM network's decision values
             int inBatch = 0, rotation = 0, round = 0;
             double blstmDiff = 0, svmVoteDiff = 0, svmDecisionDiff = 0, batchDiff = 0;
             long blstmDisagree = 0, svmDisagree = 0, compared = 0;
@@ -346,7 +347,7 @@ namespace HeadGait.Cost
                             break;
                         case 5:
                             a = ThreadClock.Now();
-                            svmNet.Network.Evaluate(svmFeatures, 1, net);
+                            svmNet.Network.Evaluate(svmFeatures, 1, svmDecision);
                             b = ThreadClock.Now();
                             t[5].Add(round, Us(a, b));
                             break;
@@ -354,14 +355,14 @@ namespace HeadGait.Cost
                             if (inBatch % 2 != 0) break;
                             var pair = Pair(batch, inBatch - 2, width);
                             a = ThreadClock.Now();
-                            svmBatch.Network.Evaluate(pair, 2, pairScores);
+                            svmBatch.Network.Evaluate(pair, 2, pairDecisions);
                             b = ThreadClock.Now();
                             t[6].Add(round, Us(a, b) / 2);
                             break;
                         case 7:
                             if (inBatch != 4) break;
                             a = ThreadClock.Now();
-                            svmBatch.Network.Evaluate(batch, 4, batchScores);
+                            svmBatch.Network.Evaluate(batch, 4, batchDecisions);
                             b = ThreadClock.Now();
                             t[7].Add(round, Us(a, b) / 4);
                             break;
@@ -398,25 +399,25 @@ namespace HeadGait.Cost
                         if (o[k] > o[theirs]) theirs = k;
                     }
                     if (mine != theirs) blstmDisagree++;
-                    svmNet.Network.Evaluate(svmFeatures, 1, net);
+                    var myVotes = svmNet.ScoreFeatures(svmFeatures);
                     var votes = ortSvm.Output(0);
                     var decision = ortSvm.Output(1);
                     mine = 0;
                     theirs = 0;
                     for (int k = 0; k < classes; k++)
                     {
-                        svmVoteDiff = Math.Max(svmVoteDiff, Math.Abs(net[k] - votes[k]));
-                        if (net[k] > net[mine]) mine = k;
+                        svmVoteDiff = Math.Max(svmVoteDiff, Math.Abs(myVotes[k] - votes[k]));
+                        if (myVotes[k] > myVotes[mine]) mine = k;
                         if (votes[k] > votes[theirs]) theirs = k;
                     }
                     if (mine != theirs) svmDisagree++;
                     for (int k = 0; k < decision.Length; k++) svmDecisionDiff = Math.Max(svmDecisionDiff, Math.Abs(svmNet.LastDecision[k] - decision[k]));
                 }
-                svmNet.Network.Evaluate(svmFeatures, 1, net);
-                Array.Copy(net, 0, singleVotes, (inBatch - 1) * classes, classes);
+                svmNet.Network.Evaluate(svmFeatures, 1, svmDecision);
+                Array.Copy(svmDecision, 0, singleDecisions, (inBatch - 1) * pairs, pairs);
                 if (inBatch == 4)
                 {
-                    for (int i = 0; i < 4 * classes; i++) batchDiff = Math.Max(batchDiff, Math.Abs(batchScores[i] - singleVotes[i]));
+                    for (int i = 0; i < 4 * pairs; i++) batchDiff = Math.Max(batchDiff, Math.Abs(batchDecisions[i] - singleDecisions[i]));
                     inBatch = 0;
                 }
             }
@@ -444,7 +445,7 @@ namespace HeadGait.Cost
                 Console.WriteLine($"{x.Name,-40} {s.min,8:F2} {s.median,8:F2} {s.p95,8:F2}   {s.roundLo:F2}-{s.roundHi:F2}");
             }
             Console.WriteLine("(classify: features, network, time filter and decision, as the pipeline calls it, on a copy of the window (each pays its own step rhythm); network: the model alone on standardised features)");
-            Console.WriteLine($"SVM windows scored together give the votes they get alone: largest difference {batchDiff:G3}");
+            Console.WriteLine($"SVM windows scored together give the decision values they get alone: largest difference {batchDiff:G3}");
             if (ortBlstm != null)
             {
                 var b = t[4].Summary();

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using HeadGait.Calibration;
 using HeadGait.Synthetic;
 using HeadGait.Unity;
 using NUnit.Framework;
@@ -35,24 +36,36 @@ namespace HeadGait.Tests
             return model;
         }
 
-        /// <summary>The stand-in network: each input row, read as [time][channel], scored by <paramref name="reference"/>.</summary>
+        /// <summary>
+        /// The stand-in network: each input row, read as [time][channel], scored by <paramref name="reference"/>, into the
+        /// float32 outputs train_learned.py exports: 'probabilities' (BLSTM), or 'votes' and 'decision' (SVM: the votes,
+        /// and the pairs' decision values they come from). <paramref name="classesOut"/>: a BLSTM output of another width.
+        /// </summary>
         static Func<Tensor<float>, Dictionary<string, Tensor<float>>> RunWith(LearnedClassifier reference, List<Tensor<float>> inputs, int classesOut = -1)
             => input =>
             {
                 inputs?.Add(input);
                 int n = input.shape[0], t = input.shape[1], ch = input.shape[2], k = classesOut > 0 ? classesOut : reference.Segments.ClassCount;
+                int pairs = reference.Segments.ClassCount * (reference.Segments.ClassCount - 1) / 2;
                 Assert.That(t * ch, Is.EqualTo(reference.Features.Width));
                 var data = input.DownloadToArray();
-                var output = new float[n * k];
+                var scores = new float[n * k];
+                var decision = new float[n * pairs];
                 var row = new double[t * ch];
                 for (int i = 0; i < n; i++)
                 {
                     for (int j = 0; j < row.Length; j++) row[j] = data[i * row.Length + j];
                     var s = reference.ScoreFeatures(row);
-                    for (int j = 0; j < k; j++) output[i * k + j] = (float)s[j % s.Length];
+                    for (int j = 0; j < k; j++) scores[i * k + j] = (float)s[j % s.Length];
+                    if (reference is SvmClassifier)
+                        for (int j = 0; j < pairs; j++) decision[i * pairs + j] = (float)reference.LastOutputs[j];
                 }
-                var name = reference is SvmClassifier ? "votes" : "probabilities";
-                return new Dictionary<string, Tensor<float>> { [name] = new Tensor<float>(new TensorShape(n, k), output) };
+                if (!(reference is SvmClassifier)) return new Dictionary<string, Tensor<float>> { ["probabilities"] = new Tensor<float>(new TensorShape(n, k), scores) };
+                return new Dictionary<string, Tensor<float>>
+                {
+                    ["votes"] = new Tensor<float>(new TensorShape(n, k), scores),
+                    ["decision"] = new Tensor<float>(new TensorShape(n, pairs), decision),
+                };
             };
 
         /// <summary>Standardised features of consecutive windows of a generated walk, as a batch (N x T x C).</summary>
@@ -85,7 +98,7 @@ namespace HeadGait.Tests
             Assert.That(problem, Is.Null);
 
             const int windows = 37;
-            int k = classifier.Segments.ClassCount;
+            int k = classifier.OutputCount;
             var features = WalkFeatures(classifier, windows);
             var expected = new double[windows * k];
             classifier.Network.Evaluate(features, windows, expected);
@@ -95,8 +108,9 @@ namespace HeadGait.Tests
             Assert.That(inputs.Count, Is.EqualTo(1), "one inference for the batch");
             Assert.That(inputs[0].shape.ToString(), Is.EqualTo($"({windows}, {classifier.Features.TimeSteps}, {classifier.Features.Channels.Length})"));
             Assert.That(inputs[0].disposed, Is.True, "the input tensor is disposed after the readback");
-            // float32 inputs and outputs: the SVM's votes are counts and agree exactly, the BLSTM's probabilities to float precision.
-            Assert.That(actual, Is.EqualTo(expected).Within(kind == "svm" ? 0 : 1e-5));
+            // float32 inputs and outputs: the BLSTM's probabilities and the SVM's decision values agree to float precision
+            // (the C# SVM's lanes read the features as float32 too; only pairs it decides again in double see the difference).
+            Assert.That(actual, Is.EqualTo(expected).Within(1e-5));
             Assert.That(sentis.Problem, Is.Null);
             Assert.That(sentis.Inferences, Is.EqualTo(1));
             // The windows differ, so a mix-up of rows would show.
@@ -130,39 +144,104 @@ namespace HeadGait.Tests
         {
             var models = Models;
             var samples = WalkingStreamGenerator.Generate("w", GaitSubject.Random(8), new StreamScript().Stand(2).Walk(10, Foot.Right).Stand(2), 8).Samples;
+            var expected = WithTheCSharpNetwork(Create(models, kind), samples);
+            var actual = ThroughSentis(Create(models, kind), Create(models, kind), samples, out int inferences);
 
-            var plain = new GaitPipeline(Create(models, kind));
-            var expected = new List<GaitPrediction>();
-            plain.FrameProduced += (p, f) => expected.Add(p);
+            Assert.That(actual.Count, Is.EqualTo(expected.Count));
+            Assert.That(inferences, Is.GreaterThan(100).And.LessThan(expected.Count), "batches of the frame's windows");
+            AssertSamePredictions(actual, expected);
+            Assert.That(expected.FindAll(p => p.IsWalking).Count, Is.GreaterThan(expected.Count / 3));
+        }
+
+        /// <summary>
+        /// A wearer profile's shifts of the output biases (the SVM's pair intercepts, the BLSTM's class biases), fitted on a
+        /// calm wearer's calibration walk with ankle trackers, act on the model's outputs in C# after any evaluator: through
+        /// Sentis, which runs the shipped export and knows nothing of the profile, the pipeline shows on the wearer's other
+        /// walk what it shows with the C# network, and that is not what the same profile with its shifts zeroed shows.
+        /// </summary>
+        [TestCase("svm")]
+        [TestCase("blstm")]
+        public void AWearersOutputShiftsActThroughSentisAsThroughTheCSharpNetwork(string kind)
+        {
+            var models = Models;
+            var wearer = CalibrationTests.Wearer();
+            var walk = CalibrationTests.Walk(wearer);
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var only = new GaitModels { Threshold = models.Threshold, Correlation = models.Correlation };
+            if (kind == SvmClassifier.Kind) only.Svm = models.Svm;
+            else only.Blstm = models.Blstm;
+            var profile = new CalibrationSession(CalibrationTests.Unlabelled(walk), left, right).Fit(only, "calm-wearer");
+            var shift = profile.AdjustmentFor(kind)?.BiasShift;
+            Assert.That(shift, Is.Not.Null.And.Some.Not.EqualTo(0), $"the {kind} refit shifts some output bias");
+            var zeroed = WearerProfile.Parse(profile.Serialize());
+            zeroed.AdjustmentFor(kind).BiasShift = new double[shift.Length];
+
+            LearnedClassifier Adapted(WearerProfile p)
+            {
+                var adapted = p.Apply(only);
+                Assert.That(adapted.Problems, Is.Empty);
+                return kind == SvmClassifier.Kind ? new SvmClassifier(adapted.Svm) : (LearnedClassifier)new BlstmClassifier(adapted.Blstm);
+            }
+            var other = WalkingStreamGenerator.Generate("other-walk", wearer, new StreamScript().Stand(2).Walk(20, Foot.Right).Stand(1).Walk(20, Foot.Left, -30).Stand(2), 911).Samples;
+            var expected = WithTheCSharpNetwork(Adapted(profile), other);
+            var unshifted = WithTheCSharpNetwork(Adapted(zeroed), other);
+            var actual = ThroughSentis(Adapted(profile), Create(models, kind), other, out _);
+
+            Assert.That(actual.Count, Is.EqualTo(expected.Count));
+            int moved = 0;
+            for (int i = 0; i < expected.Count; i++)
+                if (expected[i].Left != unshifted[i].Left || expected[i].Right != unshifted[i].Right) moved++;
+            Assert.That(moved, Is.GreaterThan(expected.Count / 100), "the shifts move the walking classes shown");
+            AssertSamePredictions(actual, expected);
+        }
+
+        /// <summary>The predictions of a pipeline pushed one sample at a time, scored by the classifier's C# network.</summary>
+        static List<GaitPrediction> WithTheCSharpNetwork(LearnedClassifier classifier, IReadOnlyList<RecordedSample> samples)
+        {
+            var plain = new GaitPipeline(classifier);
+            var predictions = new List<GaitPrediction>();
+            plain.FrameProduced += (p, f) => predictions.Add(p);
             foreach (var s in samples) plain.Push(s.Imu);
+            return predictions;
+        }
 
-            var classifier = Create(models, kind);
+        /// <summary>
+        /// The predictions of <paramref name="classifier"/> scored by a Sentis evaluator whose stand-in network is
+        /// <paramref name="reference"/>, the batches run inline at a frame every 3 samples (about 33 fps), as the Sentis
+        /// component runs them.
+        /// </summary>
+        static List<GaitPrediction> ThroughSentis(LearnedClassifier classifier, LearnedClassifier reference, IReadOnlyList<RecordedSample> samples, out int inferences)
+        {
+            string kind = classifier is SvmClassifier ? SvmClassifier.Kind : BlstmClassifier.Kind;
             var model = OnnxLike(classifier);
-            model.standInRun = RunWith(Create(models, kind), null);
-            using var sentis = SentisEvaluator.Create(classifier, model, kind + ".onnx", BackendType.GPUCompute, out _);
+            model.standInRun = RunWith(reference, null);
+            using var sentis = SentisEvaluator.Create(classifier, model, kind + ".onnx", BackendType.GPUCompute, out string problem);
+            Assert.That(problem, Is.Null);
             classifier.Evaluator = sentis;
             var runner = new GaitBatchRunner(new GaitPipeline(classifier));
             var inline = new InlineBatchScheduler(runner);
-            var actual = new List<GaitPrediction>();
-            runner.Pipeline.FrameProduced += (p, f) => actual.Add(p);
+            var predictions = new List<GaitPrediction>();
+            runner.Pipeline.FrameProduced += (p, f) => predictions.Add(p);
             for (int i = 0; i < samples.Count; i++)
             {
                 runner.Push(samples[i].Imu);
-                if (i % 3 == 2) runner.Step(inline); // a frame every 3 samples (about 33 fps)
+                if (i % 3 == 2) runner.Step(inline);
             }
             runner.Step(inline);
+            Assert.That(sentis.Problem, Is.Null);
+            inferences = sentis.Inferences;
+            return predictions;
+        }
 
+        static void AssertSamePredictions(List<GaitPrediction> actual, List<GaitPrediction> expected)
+        {
             Assert.That(actual.Count, Is.EqualTo(expected.Count));
-            Assert.That(sentis.Inferences, Is.GreaterThan(100).And.LessThan(expected.Count), "batches of the frame's windows");
-            int walking = 0;
             for (int i = 0; i < expected.Count; i++)
             {
                 Assert.That(actual[i].Left, Is.EqualTo(expected[i].Left), $"window {i}");
                 Assert.That(actual[i].Right, Is.EqualTo(expected[i].Right), $"window {i}");
                 Assert.That(actual[i].StridePosition, Is.EqualTo(expected[i].StridePosition).Within(1e-3), $"window {i}");
-                if (expected[i].IsWalking) walking++;
             }
-            Assert.That(walking, Is.GreaterThan(expected.Count / 3));
         }
 
         [Test]
@@ -191,7 +270,7 @@ namespace HeadGait.Tests
             var svm = Create(models, "svm");
             var blstmExport = OnnxLike(Create(models, "blstm"));
             Assert.That(SentisEvaluator.Create(svm, blstmExport, "blstm.onnx", BackendType.CPU, out string problem), Is.Null);
-            Assert.That(problem, Does.Contain("no output 'votes'"));
+            Assert.That(problem, Does.Contain("no output 'decision'"));
         }
 
         [Test]

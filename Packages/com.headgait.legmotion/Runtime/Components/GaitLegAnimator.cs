@@ -151,9 +151,6 @@ namespace HeadGait.Unity
         {
             if (!(Runner.Pipeline.Classifier is LearnedClassifier learned)) return false;
             learned.Evaluator = evaluator;
-            if (evaluator != null && evaluator != learned.Network && learned.WearerShiftNeedsNetwork)
-                Debug.LogWarning("HeadGait: the wearer profile's SVM calibration needs the C# network's decision values; " +
-                    "this evaluator gives votes only, so the SVM shows the shipped model's classes (use the C# network to keep the calibration).", this);
             scheduler = evaluator != null && mainThreadOnly ? new InlineBatchScheduler(runner) : (IGaitBatchScheduler)jobScheduler;
             return true;
         }

@@ -5,8 +5,10 @@ namespace HeadGait.Unity
 {
     /// <summary>
     /// Scores a learned classifier's windows with its ONNX export (Models/svm.onnx, Models/blstm.onnx) in Sentis: one
-    /// inference per batch, input 'window' (N, T, C) float32 of standardised features, output 'probabilities' (BLSTM)
-    /// or 'votes' (SVM), (N, classes), the same scores the C# network gives. Call it on the main thread only: Sentis
+    /// inference per batch, input 'window' (N, T, C) float32 of standardised features, output 'probabilities' (BLSTM,
+    /// (N, classes)) or 'decision' (SVM, (N, pairs): the pairs' decision values, from which the classifier counts the
+    /// votes and applies a wearer's shifts of the intercepts), the same outputs the C# network gives
+    /// (<see cref="LearnedClassifier.OutputCount"/> per window). Call it on the main thread only: Sentis
     /// schedules its own Burst jobs or GPU work, which Unity allows only from there. Reading the output back waits for the
     /// inference and allocates one float array per batch. If the output turns out to have another shape, it says so once
     /// (<see cref="Problem"/>) and scores with the classifier's C# network from then on. Dispose it to free the worker.
@@ -16,11 +18,11 @@ namespace HeadGait.Unity
         /// <summary>The models' input, as training/train_learned.py exports it.</summary>
         public const string InputName = "window";
         public const string BlstmOutputName = "probabilities";
-        public const string SvmOutputName = "votes";
+        public const string SvmOutputName = "decision";
 
         readonly LearnedClassifier classifier;
         readonly string outputName;
-        readonly int steps, channels, classes;
+        readonly int steps, channels, outputCount;
         Worker worker;
         float[][] inputBySize = new float[0][]; // [N] -> N x T x C values, reused
 
@@ -31,7 +33,7 @@ namespace HeadGait.Unity
             this.outputName = outputName;
             steps = classifier.Features.TimeSteps;
             channels = classifier.Features.Channels.Length;
-            classes = classifier.Segments.ClassCount;
+            outputCount = classifier.OutputCount;
         }
 
         /// <summary>Why it stopped using Sentis and scores with the C# network instead; null while Sentis runs.</summary>
@@ -40,7 +42,7 @@ namespace HeadGait.Unity
         /// <summary>Batches scored by Sentis.</summary>
         public int Inferences { get; private set; }
 
-        /// <summary>The output the ONNX export of this classifier's model has: 'votes' for the SVM, 'probabilities' for the BLSTM.</summary>
+        /// <summary>The output of this classifier's ONNX export that it reads: 'decision' for the SVM, 'probabilities' for the BLSTM.</summary>
         public static string OutputNameFor(LearnedClassifier classifier)
             => classifier is SvmClassifier ? SvmOutputName : classifier is BlstmClassifier ? BlstmOutputName : null;
 
@@ -78,15 +80,15 @@ namespace HeadGait.Unity
         static bool Fits(int dim, int expected) => dim < 0 || dim == expected; // -1: dynamic, fixed when run
         static string Dim(int d) => d < 0 ? "?" : d.ToString();
 
-        public void Evaluate(double[] features, int windows, double[] scores)
+        public void Evaluate(double[] features, int windows, double[] outputs)
         {
             int width = steps * channels;
-            if (windows < 0 || features.Length < windows * width || scores.Length < windows * classes)
-                throw new ArgumentException($"{windows} windows need {windows * width} features and {windows * classes} scores, got {features.Length} and {scores.Length}.");
+            if (windows < 0 || features.Length < windows * width || outputs.Length < windows * outputCount)
+                throw new ArgumentException($"{windows} windows need {windows * width} features and {windows * outputCount} outputs, got {features.Length} and {outputs.Length}.");
             if (windows == 0) return;
             if (Problem != null || worker == null)
             {
-                classifier.Network.Evaluate(features, windows, scores);
+                classifier.Network.Evaluate(features, windows, outputs);
                 return;
             }
             var packed = Pack(features, windows);
@@ -97,14 +99,14 @@ namespace HeadGait.Unity
                 // The output belongs to the worker; DownloadToArray waits for the inference and copies it back.
                 var output = worker.PeekOutput(outputName) as Tensor<float>;
                 var shape = output?.shape;
-                if (output == null || shape.Value.rank != 2 || shape.Value[0] != windows || shape.Value[1] != classes)
+                if (output == null || shape.Value.rank != 2 || shape.Value[0] != windows || shape.Value[1] != outputCount)
                 {
-                    Problem = $"Sentis output '{outputName}' is {(output == null ? "not float" : shape.Value.ToString())}, not ({windows}, {classes}): scoring with the C# network instead";
-                    classifier.Network.Evaluate(features, windows, scores);
+                    Problem = $"Sentis output '{outputName}' is {(output == null ? "not float" : shape.Value.ToString())}, not ({windows}, {outputCount}): scoring with the C# network instead";
+                    classifier.Network.Evaluate(features, windows, outputs);
                     return;
                 }
                 var values = output.DownloadToArray();
-                for (int i = 0; i < windows * classes; i++) scores[i] = values[i];
+                for (int i = 0; i < windows * outputCount; i++) outputs[i] = values[i];
             }
             Inferences++;
         }

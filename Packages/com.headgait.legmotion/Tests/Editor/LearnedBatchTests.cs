@@ -79,12 +79,12 @@ namespace HeadGait.Tests
             public int Calls, Windows, Largest;
             public CountingEvaluator(ILearnedEvaluator inner) => this.inner = inner;
 
-            public void Evaluate(double[] features, int windows, double[] scores)
+            public void Evaluate(double[] features, int windows, double[] outputs)
             {
                 Calls++;
                 Windows += windows;
                 Largest = Math.Max(Largest, windows);
-                inner.Evaluate(features, windows, scores);
+                inner.Evaluate(features, windows, outputs);
             }
         }
 
@@ -119,21 +119,21 @@ namespace HeadGait.Tests
         public void BatchedEvaluationEqualsPerWindowOnTheSampleRecordings(string kind, string recording)
             => AssertBatchedEqualsOneAtATime(kind, Recording(recording), expectRestart: false);
 
-        /// <summary>An evaluator that hands each window the next one's scores: the comparison above must notice.</summary>
+        /// <summary>An evaluator that hands each window the next one's outputs: the comparison above must notice.</summary>
         sealed class ShiftedRowsEvaluator : ILearnedEvaluator
         {
             readonly ILearnedEvaluator inner;
-            readonly int classes;
-            public ShiftedRowsEvaluator(ILearnedEvaluator inner, int classes)
+            readonly int outputCount;
+            public ShiftedRowsEvaluator(ILearnedEvaluator inner, int outputCount)
             {
                 this.inner = inner;
-                this.classes = classes;
+                this.outputCount = outputCount;
             }
 
-            public void Evaluate(double[] features, int windows, double[] scores)
+            public void Evaluate(double[] features, int windows, double[] outputs)
             {
-                inner.Evaluate(features, windows, scores);
-                Array.Copy(scores, classes, scores, 0, (windows - 1) * classes);
+                inner.Evaluate(features, windows, outputs);
+                Array.Copy(outputs, outputCount, outputs, 0, (windows - 1) * outputCount);
             }
         }
 
@@ -144,13 +144,13 @@ namespace HeadGait.Tests
             var samples = GeneratedWalkWithGap();
             var expected = OneAtATime(Create(models, "blstm"), samples);
             var shifted = Create(models, "blstm");
-            shifted.Evaluator = new ShiftedRowsEvaluator(shifted.Network, shifted.Segments.ClassCount);
+            shifted.Evaluator = new ShiftedRowsEvaluator(shifted.Network, shifted.OutputCount);
             var actual = Batched(shifted, samples, out _);
             Assert.That(actual.Count, Is.EqualTo(expected.Count));
             Assert.That(actual, Is.Not.EqualTo(expected));
         }
 
-        /// <summary>The SVM scores four windows per pass and the rest one by one: every batch size gives each window's own scores.</summary>
+        /// <summary>The SVM scores four windows per pass and the rest one by one: every batch size gives each window's own outputs.</summary>
         [TestCase("blstm")]
         [TestCase("svm")]
         public void TheNetworkScoresABatchAsItScoresEachWindow(string kind)
@@ -165,9 +165,11 @@ namespace HeadGait.Tests
                 {
                     if (rows.Count >= 64 || w.EndTime < 3) return;
                     rows.Add((double[])blstm.Standardise(w).Clone());
-                    single.Add((double[])blstm.ScoreFeatures(blstm.Standardise(w)).Clone());
+                    var alone = new double[blstm.OutputCount];
+                    blstm.Network.Evaluate(blstm.Standardise(w), 1, alone);
+                    single.Add(alone);
                 });
-            int width = blstm.Features.Width, k = blstm.Segments.ClassCount;
+            int width = blstm.Features.Width, k = blstm.OutputCount;
             var features = new double[rows.Count * width];
             for (int i = 0; i < rows.Count; i++) Array.Copy(rows[i], 0, features, i * width, width);
             var scores = new double[rows.Count * k];

@@ -180,22 +180,16 @@ namespace HeadGait.Tests
         sealed class FooledByTheBumps : ILearnedEvaluator
         {
             readonly LearnedClassifier classifier;
-            readonly bool votes;
             public double Time;
 
-            public FooledByTheBumps(LearnedClassifier classifier, bool votes)
-            {
-                this.classifier = classifier;
-                this.votes = votes;
-            }
+            public FooledByTheBumps(LearnedClassifier classifier) => this.classifier = classifier;
 
-            public void Evaluate(double[] features, int windows, double[] scores)
+            public void Evaluate(double[] features, int windows, double[] outputs)
             {
                 var segments = classifier.Segments;
-                int classes = segments.ClassCount;
                 double c = (Time - First) % Cycle;
                 int shown = Time >= First && c < 1.2 ? (int)(c / 1.1 * segments.Count) % segments.Count : segments.StandingClass;
-                for (int k = 0; k < classes; k++) scores[k] = votes ? (k == shown ? 10 : 0) : (k == shown ? 0.999 : 0.001 / (classes - 1));
+                SureOutputs.Write(classifier, shown, outputs);
             }
         }
 
@@ -216,7 +210,7 @@ namespace HeadGait.Tests
             (int Walking, int Longest, double First) Run(double maxBend, double degrees)
             {
                 var learned = Learned(svm, maxBend);
-                var fooled = new FooledByTheBumps(learned, svm);
+                var fooled = new FooledByTheBumps(learned);
                 learned.Evaluator = fooled;
                 return Walks(learned, BumpsThenBend(5, degrees), t => fooled.Time = t);
             }

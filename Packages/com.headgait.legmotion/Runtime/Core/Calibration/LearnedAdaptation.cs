@@ -193,7 +193,7 @@ namespace HeadGait.Calibration
             var scale = model.Tensor("input_scale", shape);
             var gain = new double[channels];
             for (int c = 0; c < channels; c++) gain[c] = 1;
-            var noShift = new double[classifier.PairwiseOutputs ? classifier.Segments.ClassCount * (classifier.Segments.ClassCount - 1) / 2 : classifier.Segments.ClassCount];
+            var noShift = new double[classifier.OutputCount];
             // The channels' gains in turn, twice round: a step stays only where it classifies clearly more windows right.
             double best = Errors(Outputs(classifier, windows, mean, scale, gain), windows, classifier, noShift);
             for (int round = 0; channelGains && round < 2; round++)

@@ -159,12 +159,12 @@ namespace HeadGait
             for (int k = 0; k < classes; k++) probabilities[k] /= sum;
         }
 
-        /// <summary>The shifted logits' softmax: the probabilities times e^shift, normalised.</summary>
-        protected override bool WearerProbabilities(double[] classScores, double[] p)
+        /// <summary>The shifted logits' softmax: the probabilities (the outputs, from any evaluator) times e^shift, normalised.</summary>
+        protected override bool WearerProbabilities(double[] probabilities, double[] p)
         {
             if (wearerShift == null) return false;
             double sum = 0;
-            for (int k = 0; k < classes; k++) sum += p[k] = classScores[k] * Math.Exp(wearerShift[k]);
+            for (int k = 0; k < classes; k++) sum += p[k] = probabilities[k] * Math.Exp(wearerShift[k]);
             if (!(sum > 0)) return false;
             for (int k = 0; k < classes; k++) p[k] /= sum;
             return true;

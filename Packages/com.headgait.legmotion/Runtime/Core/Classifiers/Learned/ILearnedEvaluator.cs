@@ -10,9 +10,11 @@ namespace HeadGait
         /// <summary>
         /// Scores <paramref name="windows"/> windows. <paramref name="features"/> holds their standardised features
         /// window by window, each [time][channel] (<see cref="WindowFeatures"/>), which is the ONNX input 'window' of shape
-        /// (N, T, C) in row-major order. Writes each window's class scores, window by window, into
-        /// <paramref name="scores"/> (N x classes) in the classifier's own sense: probabilities for the BLSTM, votes for the SVM.
+        /// (N, T, C) in row-major order. Writes each window's outputs, window by window, into <paramref name="outputs"/>
+        /// (N x <see cref="LearnedClassifier.OutputCount"/>): the class probabilities for the BLSTM (ONNX output
+        /// 'probabilities'), the pairs' decision values for the SVM (ONNX output 'decision', LIBSVM's pair order), from
+        /// which the classifier counts the votes and applies a wearer's shifts.
         /// </summary>
-        void Evaluate(double[] features, int windows, double[] scores);
+        void Evaluate(double[] features, int windows, double[] outputs);
     }
 }

@@ -6,9 +6,10 @@ namespace HeadGait
     /// <summary>
     /// Shared part of the learned classifiers (SVM, BLSTM): reads the features a model file names, standardises them,
     /// lets the model score each class (a stride segment naming both feet's phases, or Standing) through its
-    /// <see cref="Evaluator"/> (the C# network, or the ONNX export in Sentis; windows may be scored in batches), turns the scores into
-    /// probabilities, filters them over time with the gait's order (<see cref="PhaseSequenceFilter"/>, unless turned off)
-    /// and reports the most likely class. Its stride position is the segment's, nudged towards the likelier neighbour;
+    /// <see cref="Evaluator"/> (the C# network, or the ONNX export in Sentis; windows may be scored in batches: the
+    /// evaluator gives the model's outputs, <see cref="OutputCount"/> per window, and the scores are made from them here),
+    /// turns the scores into probabilities, filters them over time with the gait's order (<see cref="PhaseSequenceFilter"/>,
+    /// unless turned off) and reports the most likely class. Its stride position is the segment's, nudged towards the likelier neighbour;
     /// its step period is the head's rhythm's where it shows one (<see cref="PhaseFilterSettings.PeriodFromRhythm"/>), else
     /// comes from the time between predicted foot contacts.
     /// </summary>
@@ -23,9 +24,10 @@ namespace HeadGait
         readonly double[] inputMean;
         readonly double[] inputScale;
         readonly double[] features;
+        readonly double[] outputs;  // the last window's, as the evaluator gave them (OutputCount)
         readonly double[] scores;
         readonly double[] probabilities;
-        readonly double[] batchRow, batchRowScores;
+        readonly double[] batchRow, batchRowOutputs;
         readonly PhaseSequenceFilter filter;
         PhaseSequenceFilter wearerFilter;      // over the wearer's probabilities, made on their first window
         readonly double[] wearerProbabilities;
@@ -83,11 +85,14 @@ namespace HeadGait
             foreach (var m in inputMean)
                 if (!(Math.Abs(m) <= MaxAbsInputMean)) throw new ModelFormatException(model.Source, $"input_mean holds {m:G4}, outside -{MaxAbsInputMean}..{MaxAbsInputMean} m/s^2 (what training produces)");
             features = new double[Features.Width];
+            int k = Segments.ClassCount;
+            OutputCount = PairwiseOutputs ? k * (k - 1) / 2 : k; // PairwiseOutputs: a constant of the derived class
+            outputs = new double[OutputCount];
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];
             wearerProbabilities = new double[Segments.ClassCount];
             batchRow = new double[Features.Width];
-            batchRowScores = new double[Segments.ClassCount];
+            batchRowOutputs = new double[OutputCount];
             filter = filterSettings == null ? null : new PhaseSequenceFilter(Segments, filterSettings);
             stepPeriod = DefaultStepPeriod;
             network = new CSharpNetwork(this);
@@ -126,6 +131,16 @@ namespace HeadGait
         /// <summary>Class scores of the last window (model-specific: probabilities for the BLSTM, votes for the SVM).</summary>
         public double[] LastScores => scores;
 
+        /// <summary>
+        /// Values an evaluator gives per window (<see cref="ILearnedEvaluator"/>), one per output bias
+        /// (<see cref="OutputBiasName"/>): the SVM's pair decision values, the BLSTM's class probabilities. The class scores
+        /// and the wearer's shifts (<see cref="WearerShiftTensor"/>) are made from them in C#, after any evaluator.
+        /// </summary>
+        public int OutputCount { get; }
+
+        /// <summary>The last window's outputs (<see cref="OutputCount"/>), as the evaluator gave them or <see cref="ScoreFeatures"/> computed them.</summary>
+        protected double[] WindowOutputs => outputs;
+
         /// <summary>The model in plain C# (allocation-free): the evaluator unless another is set.</summary>
         public ILearnedEvaluator Network => network;
 
@@ -136,28 +151,32 @@ namespace HeadGait
             set => evaluator = value ?? network;
         }
 
-        /// <summary>Scores every class from standardised features ([time][channel]); higher is more likely.</summary>
-        protected abstract void Score(double[] standardised, double[] classScores);
+        /// <summary>The model's outputs (<see cref="OutputCount"/>) from standardised features ([time][channel]).</summary>
+        protected abstract void Score(double[] standardised, double[] windowOutputs);
 
         /// <summary>
-        /// Scores <paramref name="windows"/> windows of standardised features (window by window) into
-        /// <paramref name="classScores"/> (window by window); one at a time through <see cref="Score"/> unless the model
+        /// The outputs of <paramref name="windows"/> windows of standardised features (window by window) into
+        /// <paramref name="windowOutputs"/> (window by window); one at a time through <see cref="Score"/> unless the model
         /// gains from scoring them together. Every window must score exactly as it would alone.
         /// </summary>
-        protected virtual void ScoreBatch(double[] features, int windows, double[] classScores)
+        protected virtual void ScoreBatch(double[] features, int windows, double[] windowOutputs)
         {
-            int w = Features.Width, k = Segments.ClassCount;
+            int w = Features.Width, k = OutputCount;
             for (int n = 0; n < windows; n++)
             {
                 Array.Copy(features, n * w, batchRow, 0, w);
-                Score(batchRow, batchRowScores);
-                Array.Copy(batchRowScores, 0, classScores, n * k, k);
+                Score(batchRow, batchRowOutputs);
+                Array.Copy(batchRowOutputs, 0, windowOutputs, n * k, k);
             }
         }
 
+        /// <summary>Every class's score from a window's outputs; higher is more likely (the BLSTM's probabilities are its outputs).</summary>
+        protected virtual void ClassScores(double[] windowOutputs, double[] classScores) => Array.Copy(windowOutputs, classScores, classScores.Length);
+
         /// <summary>
         /// Optional tensor of a wearer's calibration (<see cref="HeadGait.Calibration.LearnedAdjustment"/>): shifts of the
-        /// output biases (the shape of <see cref="OutputBiasName"/>'s), through <see cref="WearerProbabilities"/>.
+        /// output biases (the shape of <see cref="OutputBiasName"/>'s), applied to the window's outputs whatever the
+        /// evaluator (<see cref="WearerProbabilities"/>).
         /// </summary>
         public const string WearerShiftTensor = "wearer_output_shift";
 
@@ -175,19 +194,11 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// The probabilities with a wearer's output shifts (<see cref="WearerShiftTensor"/>) from the window's
-        /// <paramref name="classScores"/>, into <paramref name="p"/>; false where the model holds none (or the scores came
-        /// from a runtime that does not carry them). They choose only which walking class is shown: whether the wearer walks
-        /// is the shipped outputs' decision (<see cref="Decide"/>).
+        /// The probabilities with a wearer's output shifts (<see cref="WearerShiftTensor"/>) from the window's outputs
+        /// (<paramref name="windowOutputs"/>), into <paramref name="p"/>; false where the model holds none. They choose only
+        /// which walking class is shown: whether the wearer walks is the shipped outputs' decision (<see cref="Decide"/>).
         /// </summary>
-        protected virtual bool WearerProbabilities(double[] classScores, double[] p) => false;
-
-        /// <summary>
-        /// Whether the wearer's output shifts need the C# <see cref="Network"/>'s scores: the SVM's shifts act on its pair
-        /// decision values, which another evaluator (the ONNX export in Sentis: votes only) does not give, so with one the
-        /// SVM shows the shipped model's classes. Callers that set <see cref="Evaluator"/> warn the user.
-        /// </summary>
-        public virtual bool WearerShiftNeedsNetwork => false;
+        protected virtual bool WearerProbabilities(double[] windowOutputs, double[] p) => false;
 
         /// <summary>
         /// The tensor holding the last layer's biases, which a wearer's calibration may shift (<see cref="HeadGait.Calibration.LearnedAdaptation"/>):
@@ -233,11 +244,15 @@ namespace HeadGait
             return features;
         }
 
-        /// <summary>Class scores for already standardised features (for checks against the training framework).</summary>
+        /// <summary>
+        /// Class scores for already standardised features (for checks against the training framework), by the C# network
+        /// (<see cref="LastOutputs"/> then holds what the output biases add to for them).
+        /// </summary>
         public double[] ScoreFeatures(double[] standardised)
         {
             if (standardised.Length != Features.Width) throw new ArgumentException($"Expected {Features.Width} features, got {standardised.Length}.");
-            Score(standardised, scores);
+            Score(standardised, outputs);
+            ClassScores(outputs, scores);
             return scores;
         }
 
@@ -250,7 +265,7 @@ namespace HeadGait
 
         public GaitPrediction Classify(SignalWindow window)
         {
-            evaluator.Evaluate(Standardise(window), 1, scores);
+            evaluator.Evaluate(Standardise(window), 1, outputs);
             var gate = JudgeGate(window);
             return Decide(window.EndTime, window.SampleRate, gate, ReadTilt(window), rhythmPeriod);
         }
@@ -308,25 +323,27 @@ namespace HeadGait
 
         /// <summary>
         /// The rest of <see cref="Classify"/> for a window scored elsewhere, in a batch (<see cref="LearnedWindowBatch"/>):
-        /// row <paramref name="row"/> of <paramref name="batchScores"/> (windows x classes). Call it for the windows in
+        /// row <paramref name="row"/> of <paramref name="batchOutputs"/> (windows x <see cref="OutputCount"/>, as
+        /// <see cref="ILearnedEvaluator.Evaluate"/> writes them). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tilt"/>: what
         /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
         /// <see cref="JudgeGate"/> judged it (0: none).
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchScores, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0)
+        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0)
         {
-            Array.Copy(batchScores, row * scores.Length, scores, 0, scores.Length);
+            Array.Copy(batchOutputs, row * outputs.Length, outputs, 0, outputs.Length);
             return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod);
         }
 
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
-        /// <summary>From the window's scores (in <see cref="scores"/>) to its prediction.</summary>
+        /// <summary>From the window's outputs (in <see cref="outputs"/>) to its prediction.</summary>
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod)
         {
+            ClassScores(outputs, scores);
             ToProbabilities(scores, probabilities);
-            bool wearer = WearerProbabilities(scores, wearerProbabilities);
+            bool wearer = WearerProbabilities(outputs, wearerProbabilities);
             bool bending = Bending(tilt.Change, now) || BendingFromStill(tilt, now);
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
@@ -515,12 +532,12 @@ namespace HeadGait
 
             public CSharpNetwork(LearnedClassifier owner) => this.owner = owner;
 
-            public void Evaluate(double[] features, int windows, double[] scores)
+            public void Evaluate(double[] features, int windows, double[] outputs)
             {
-                int w = owner.Features.Width, k = owner.Segments.ClassCount;
-                if (windows < 0 || features.Length < windows * w || scores.Length < windows * k)
-                    throw new ArgumentException($"{windows} windows need {windows * w} features and {windows * k} scores, got {features.Length} and {scores.Length}.");
-                owner.ScoreBatch(features, windows, scores);
+                int w = owner.Features.Width, k = owner.OutputCount;
+                if (windows < 0 || features.Length < windows * w || outputs.Length < windows * k)
+                    throw new ArgumentException($"{windows} windows need {windows * w} features and {windows * k} outputs, got {features.Length} and {outputs.Length}.");
+                owner.ScoreBatch(features, windows, outputs);
             }
         }
 

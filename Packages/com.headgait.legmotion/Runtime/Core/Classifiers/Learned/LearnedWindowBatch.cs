@@ -11,9 +11,9 @@ namespace HeadGait
     public sealed class LearnedWindowBatch
     {
         readonly LearnedClassifier classifier;
-        readonly int width, classes;
+        readonly int width, outputCount;
         double[] features = Array.Empty<double>(); // [window][time][channel]
-        double[] scores = Array.Empty<double>();   // [window][class]
+        double[] outputs = Array.Empty<double>();  // [window][output] (LearnedClassifier.OutputCount)
         Entry[] entries = new Entry[16];
         int entryCount, windowCount;
         bool evaluated;
@@ -32,7 +32,7 @@ namespace HeadGait
         {
             this.classifier = classifier ?? throw new ArgumentNullException(nameof(classifier));
             width = classifier.Features.Width;
-            classes = classifier.Segments.ClassCount;
+            outputCount = classifier.OutputCount;
         }
 
         /// <summary>Windows and restarts queued, in order.</summary>
@@ -49,7 +49,7 @@ namespace HeadGait
             {
                 int capacity = Math.Max(16, 2 * windowCount);
                 Array.Resize(ref features, capacity * width);
-                Array.Resize(ref scores, capacity * classes);
+                Array.Resize(ref outputs, capacity * outputCount);
             }
             Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
             Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), Tilt = classifier.ReadTilt(window), RhythmPeriod = classifier.RhythmPeriod });
@@ -71,7 +71,7 @@ namespace HeadGait
         /// <summary>Scores every queued window in one call of the classifier's evaluator (none when no window is queued).</summary>
         public void Evaluate()
         {
-            if (windowCount > 0) classifier.Evaluator.Evaluate(features, windowCount, scores);
+            if (windowCount > 0) classifier.Evaluator.Evaluate(features, windowCount, outputs);
             evaluated = true;
         }
 
@@ -89,7 +89,7 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(scores, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod);
+            return classifier.ClassifyScored(outputs, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod);
         }
 
         public void Clear()

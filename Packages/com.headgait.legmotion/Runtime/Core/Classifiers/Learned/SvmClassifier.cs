@@ -7,9 +7,10 @@ namespace HeadGait
     /// <summary>
     /// SVM: support vector machine with a polynomial kernel K(a, b) = (gamma a.b + coef0)^degree (the paper: cubic,
     /// C = 100), one-versus-one over the stride segments and Standing as LIBSVM trains it. Each pair's decision value
-    /// votes for one of its two classes; the class with most votes wins, ties going to the lower class. Scores are the
-    /// votes. Computed in float32 SIMD lanes, several windows per pass over the support vectors, with pairs too close to
-    /// call decided again in double (<see cref="RecheckMargin"/>); scalar and double without lanes. Allocation-free per window.
+    /// votes for one of its two classes; the class with most votes wins, ties going to the lower class. Its outputs (what
+    /// an evaluator gives) are the pairs' decision values, its scores the votes they cast. Computed in float32 SIMD lanes,
+    /// several windows per pass over the support vectors, with pairs too close to call decided again in double
+    /// (<see cref="RecheckMargin"/>); scalar and double without lanes. Allocation-free per window.
     /// </summary>
     public sealed class SvmClassifier : LearnedClassifier
     {
@@ -39,7 +40,6 @@ namespace HeadGait
         readonly Vector<float>[] dual;     // [coefficient row][block], zero in the padding
         readonly float[] x;                // [WindowsPerPass x D]
         readonly Vector<float>[] kernel;   // [WindowsPerPass x blocks]
-        readonly double[] decision;
         double[] kernelInDouble;           // [nSV], the scalar path's, made on its first use
         readonly double[] share;           // [WindowsPerPass x (K-1) x K]: each coefficient row over each class's vectors
 
@@ -110,7 +110,6 @@ namespace HeadGait
             }
             x = new float[WindowsPerPass * width];
             kernel = new Vector<float>[WindowsPerPass * blockCount];
-            decision = new double[intercept.Length];
             share = new double[WindowsPerPass * (classes - 1) * classes];
         }
 
@@ -120,15 +119,28 @@ namespace HeadGait
         /// Votes as probabilities for the time filter: each vote multiplies a class's odds by e (softmax of the votes). One-
         /// versus-one votes are not calibrated probabilities; this keeps their order and lets a clear winner dominate.
         /// </summary>
-        protected override void ToProbabilities(double[] votes, double[] p)
+        protected override void ToProbabilities(double[] votes, double[] p) => Softmax(votes, p);
+
+        /// <summary>The votes the pairs' decision values cast.</summary>
+        protected override void ClassScores(double[] decision, double[] votes) => Votes(decision, null, votes);
+
+        /// <summary>The votes of the wearer's shifted intercepts (decision value + shift) as probabilities.</summary>
+        protected override bool WearerProbabilities(double[] decision, double[] p)
         {
-            if (wearerShift == null)
-            {
-                Softmax(votes, p);
-                return;
-            }
-            for (int k = 0; k < votes.Length; k++) p[k] = Math.Floor(votes[k]); // the shipped votes, without the wearer's (ShiftForWearer)
+            if (wearerShift == null) return false;
+            Votes(decision, wearerShift, p);
             Softmax(p, p);
+            return true;
+        }
+
+        /// <summary>Each pair's vote: for its first class where its decision value (plus <paramref name="shift"/>'s, if any) is positive, else for its second.</summary>
+        void Votes(double[] decision, double[] shift, double[] votes)
+        {
+            Array.Clear(votes, 0, classes);
+            int pair = 0;
+            for (int i = 0; i < classes; i++)
+                for (int j = i + 1; j < classes; j++, pair++)
+                    votes[(shift == null ? decision[pair] : decision[pair] + shift[pair]) > 0 ? i : j]++;
         }
 
         static void Softmax(double[] votes, double[] p)
@@ -143,23 +155,25 @@ namespace HeadGait
         public int SupportVectors => vectors;
 
         /// <summary>Pairwise decision values of the last window, in LIBSVM's order (0 vs 1, 0 vs 2, ..., K-2 vs K-1).</summary>
-        public double[] LastDecision => decision;
+        public double[] LastDecision => WindowOutputs;
 
         public override string OutputBiasName => "intercept";
         public override bool PairwiseOutputs => true;
-        public override double[] LastOutputs => decision;
+        public override double[] LastOutputs => WindowOutputs;
 
-        protected override void Score(double[] standardised, double[] votes) => ScoreBatch(standardised, 1, votes);
+        protected override void Score(double[] standardised, double[] decision) => ScoreBatch(standardised, 1, decision);
 
         /// <summary>
-        /// Up to <see cref="WindowsPerPass"/> windows per pass over the support vectors: each block is loaded once for all
-        /// of them. A window's sums run in the same order alone or with others, so batching leaves its votes as they were.
+        /// The windows' pair decision values, up to <see cref="WindowsPerPass"/> windows per pass over the support vectors:
+        /// each block is loaded once for all of them. A window's sums run in the same order alone or with others, so
+        /// batching leaves its decision values as they were.
         /// </summary>
-        protected override void ScoreBatch(double[] features, int windows, double[] votes)
+        protected override void ScoreBatch(double[] features, int windows, double[] decision)
         {
+            int pairs = intercept.Length;
             if (!VectorMath.UseVectors)
             {
-                for (int w = 0; w < windows; w++) ScoreInDouble(features, w * width, votes, w * classes);
+                for (int w = 0; w < windows; w++) ScoreInDouble(features, w * width, decision, w * pairs);
                 return;
             }
             for (int w0 = 0; w0 < windows; w0 += WindowsPerPass)
@@ -172,7 +186,7 @@ namespace HeadGait
                 // The polynomial apart from the products: a call there would make the JIT keep the sums on the stack.
                 int used = n * firstBlock[classes];
                 for (int i = 0; i < used; i++) kernel[i] = Kernel(kernel[i]);
-                Vote(n, votes, w0 * classes, features, w0 * width);
+                DecisionValues(n, decision, w0 * pairs, features, w0 * width);
             }
         }
 
@@ -283,12 +297,12 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// The decision values and votes of windows w0.. w0 + n - 1 from their kernel values: each class's share of each
+        /// The decision values of windows w0.. w0 + n - 1 from their kernel values: each class's share of each
         /// coefficient row over its own blocks (pair (i, j) adds class i's share of row j-1 and class j's share of row i, as
         /// LIBSVM lays the coefficients out), summed lane by lane in float32 and across the lanes in double. With several
         /// windows each coefficient block is loaded once for all of them.
         /// </summary>
-        void Vote(int n, double[] votes, int vo, double[] features, int fo)
+        void DecisionValues(int n, double[] decision, int o, double[] features, int fo)
         {
             int blockCount = firstBlock[classes], rows = classes - 1;
             if (n == 1) VoteOne(rows, blockCount);
@@ -318,58 +332,25 @@ namespace HeadGait
             }
             for (int w = 0; w < n; w++)
             {
-                int o = vo + w * classes, pair = 0;
-                Array.Clear(votes, o, classes);
+                int pair = 0, wo = o + w * intercept.Length;
                 for (int i = 0; i < classes; i++)
                 {
                     for (int j = i + 1; j < classes; j++)
                     {
                         double sum = intercept[pair] + share[(w * rows + j - 1) * classes + i] + share[(w * rows + i) * classes + j];
                         if (Math.Abs(sum) < RecheckMargin) sum = DecideInDouble(pair, i, j, features, fo + w * width);
-                        decision[pair] = sum;
-                        if (sum > 0) votes[o + i]++;
-                        else votes[o + j]++;
-                        pair++;
+                        decision[wo + pair++] = sum;
                     }
                 }
-                ShiftForWearer(votes, o);
             }
         }
 
         /// <summary>
-        /// With a wearer's shifts: the votes the shifted intercepts cast ride in the window's scores as a fraction
-        /// (votes + shifted votes / <see cref="ShiftedVoteScale"/>; votes are whole and below the scale), so that they travel
-        /// with the window through a batch; <see cref="ToProbabilities"/> reads the whole votes, <see cref="WearerProbabilities"/> the fraction.
-        /// </summary>
-        void ShiftForWearer(double[] votes, int o)
-        {
-            if (wearerShift == null) return;
-            int pair = 0;
-            for (int i = 0; i < classes; i++)
-                for (int j = i + 1; j < classes; j++, pair++)
-                    votes[o + (decision[pair] + wearerShift[pair] > 0 ? i : j)] += 1.0 / ShiftedVoteScale;
-        }
-
-        /// <summary>Shifted votes ride below the whole votes divided by this (a power of two: exact in binary; more than any count of votes).</summary>
-        const double ShiftedVoteScale = 1024;
-
-        public override bool WearerShiftNeedsNetwork => wearerShift != null;
-
-        protected override bool WearerProbabilities(double[] classScores, double[] p)
-        {
-            if (wearerShift == null) return false;
-            double any = 0;
-            for (int k = 0; k < classScores.Length; k++) any += p[k] = (classScores[k] - Math.Floor(classScores[k])) * ShiftedVoteScale;
-            if (!(any > 0)) return false; // scores from a runtime without the shifts (plain votes)
-            Softmax(p, p);
-            return true;
-        }
-
-        /// <summary>
         /// Pairs whose float32 decision value lies this close to zero are decided again in double, so that every vote is cast
-        /// as in double arithmetic: float32 moves decision values by up to about 1e-3 (against LIBSVM's on the reference
-        /// windows), and without the recheck 20 of 26,711 real windows cast a vote otherwise (none changed the winner).
-        /// About one window in a hundred has such a pair; each costs the two classes' kernels in double.
+        /// as in double arithmetic (the C# network's; the ONNX export in Sentis stays in float32): float32 moves decision
+        /// values by up to about 1e-3 (against LIBSVM's on the reference windows), and without the recheck 20 of 26,711
+        /// real windows cast a vote otherwise (none changed the winner). About one window in a hundred has such a pair;
+        /// each costs the two classes' kernels in double.
         /// </summary>
         public const double RecheckMargin = 0.01;
 
@@ -377,7 +358,7 @@ namespace HeadGait
         /// Without SIMD lanes (<see cref="VectorMath.UseVectors"/>): one window in double, one support vector at a time, as
         /// LIBSVM computes it and as this class did before float32 lanes; the same votes as the lanes cast.
         /// </summary>
-        void ScoreInDouble(double[] features, int fo, double[] votes, int vo)
+        void ScoreInDouble(double[] features, int fo, double[] decision, int o)
         {
             if (kernelInDouble == null) kernelInDouble = new double[vectors];
             for (int s = 0; s < vectors; s++) kernelInDouble[s] = KernelInDouble(s, features, fo);
@@ -385,19 +366,10 @@ namespace HeadGait
             for (int r = 0; r < rows; r++)
                 for (int c = 0; c < classes; c++)
                     share[r * classes + c] = VectorMath.Dot(dualCoef, r * vectors + start[c], kernelInDouble, start[c], count[c]);
-            Array.Clear(votes, vo, classes);
             int pair = 0;
             for (int i = 0; i < classes; i++)
-            {
-                for (int j = i + 1; j < classes; j++)
-                {
-                    double sum = intercept[pair] + share[(j - 1) * classes + i] + share[i * classes + j];
-                    decision[pair++] = sum;
-                    if (sum > 0) votes[vo + i]++;
-                    else votes[vo + j]++;
-                }
-            }
-            ShiftForWearer(votes, vo);
+                for (int j = i + 1; j < classes; j++, pair++)
+                    decision[o + pair] = intercept[pair] + share[(j - 1) * classes + i] + share[i * classes + j];
         }
 
         /// <summary>Pair (i, j)'s decision value in double, over the two classes' support vectors, as LIBSVM computes it.</summary>
