@@ -269,8 +269,7 @@ namespace HeadGait
         double lastRhythmPeriod;      // the last step period the rhythm showed (kept through turns and stops); 0 before one
         int rhythmCountdown;
         readonly HeadTilt tilt = new HeadTilt(); // the tilt's movement and the last still head, read with the rhythm
-        bool startsFromStill;         // whether the walk (or, while standing, one starting now) starts from a still head
-        double probationUntil;        // until when a walk from a still head is withdrawn on a bend; NaN before its start is read
+        readonly StillStartGuard still = new StillStartGuard(); // the still-head start rule (StillStartMaxBend)
         double firstSeen;             // the first still-head reading's time (StillStartContactsAfterStanding counts from it); NaN before
         int hiddenContacts;           // contacts a walk from a still head still needs before it is shown (StillStartContacts)
 
@@ -309,8 +308,7 @@ namespace HeadGait
             firstStep.Reset();
             lastWalking = double.NegativeInfinity;
             tilt.Reset();
-            startsFromStill = false;
-            probationUntil = double.NaN;
+            still.Reset();
             hiddenContacts = 0;
             firstSeen = double.NaN;
         }
@@ -349,14 +347,8 @@ namespace HeadGait
         void FollowStill(double now)
         {
             if (double.IsNaN(firstSeen)) firstSeen = now;
-            var reading = tilt.Reading;
-            if (!IsWalking(now))
-            {
-                startsFromStill = reading.SinceStill <= HeadTilt.StillRecent;
-                probationUntil = double.NaN;
-            }
-            else if (double.IsNaN(probationUntil)) probationUntil = now + HeadTilt.StillStartProbation;
-            if (startsFromStill && IsWalking(now) && now < probationUntil && reading.Bends(settings.StillStartMaxBend)) Stop();
+            bool walking = IsWalking(now);
+            if (still.Refuses(tilt.Reading, walking, now, settings.StillStartMaxBend) && walking) Stop();
         }
 
         /// <summary>
@@ -370,7 +362,7 @@ namespace HeadGait
         public bool StartBlocked(double now, double gateLogOdds)
             => !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange
                 || settings.StartNeedsGateScore && !(gateLogOdds > 0)
-                || startsFromStill && tilt.Reading.Bends(settings.StillStartMaxBend));
+                || still.RefusesStart(tilt.Reading, settings.StillStartMaxBend));
 
         /// <summary>
         /// Whether a contact now may start a provisional walk although the gate refuses (<see cref="FirstStepStartSettings"/>):
@@ -384,7 +376,7 @@ namespace HeadGait
             => firstStep.Waiting && IsWalking(now)
                 ? gateLogOdds > -settings.FirstStep.Margin
                 : firstStep.Allows(IsWalking(now), gateLogOdds, now - lastWalking) && !(settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange)
-                    && !(startsFromStill && tilt.Reading.Bends(settings.StillStartMaxBend));
+                    && !still.RefusesStart(tilt.Reading, settings.StillStartMaxBend);
 
         /// <summary>
         /// After each window's contacts: a walk that began this window on <see cref="MayStartOnFirstStep"/> (it did not walk
@@ -478,7 +470,7 @@ namespace HeadGait
             hiddenContacts = 0;
         }
 
-        bool FromStill(double now) => settings.StillStartContacts > 1 && startsFromStill && now - Math.Max(lastWalking, firstSeen) >= settings.StillStartContactsAfterStanding;
+        bool FromStill(double now) => settings.StillStartContacts > 1 && still.FromStill && now - Math.Max(lastWalking, firstSeen) >= settings.StillStartContactsAfterStanding;
 
         /// <summary>
         /// Whether the walk under way is not shown yet: it started from a still head and waits for its next contact

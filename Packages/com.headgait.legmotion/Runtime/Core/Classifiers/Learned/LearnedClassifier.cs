@@ -40,7 +40,7 @@ namespace HeadGait
         double lastContactTime = double.NaN;
         double lastPosition;  // stride position of the last walking prediction
         double carriedSince = double.NaN; // when the shown class began to be carried across a swap (SwapCarrySteps); NaN when not
-        bool walkFromStill;   // whether the walk going on started from a still head (PhaseFilterSettings.StillStartMaxBend)
+        readonly StillStartGuard still = new StillStartGuard(); // the still-head start rule (PhaseFilterSettings.StillStartMaxBend)
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
@@ -221,7 +221,7 @@ namespace HeadGait
             refusedRun = 0;
             walkStartTime = double.NaN;
             carriedSince = double.NaN;
-            walkFromStill = false;
+            still.Reset();
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -327,7 +327,8 @@ namespace HeadGait
         {
             ToProbabilities(scores, probabilities);
             bool wearer = WearerProbabilities(scores, wearerProbabilities);
-            bool bending = Bending(tilt.Change, now) || BendingFromStill(tilt, now);
+            bool bendingFromStill = BendingFromStill(tilt, now); // read every window: it follows the standing before a start
+            bool bending = Bending(tilt.Change, now) || bendingFromStill;
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
@@ -396,7 +397,7 @@ namespace HeadGait
             if (!WasWalking)
             {
                 walkStartTime = now;
-                walkFromStill = tilt.SinceStill <= HeadTilt.StillRecent;
+                still.Started(now);
             }
             lastClass = best;
             // Within the segment, lean towards whichever neighbour scores higher.
@@ -466,9 +467,7 @@ namespace HeadGait
         bool BendingFromStill(HeadTiltReading tilt, double now)
         {
             double limit = filter?.Settings.StillStartMaxBend ?? 0;
-            if (!(limit > 0)) return false;
-            if (!WasWalking) return tilt.BentFromStill(limit);
-            return walkFromStill && now - walkStartTime < HeadTilt.StillStartProbation && tilt.Bends(limit);
+            return limit > 0 && still.Refuses(tilt, WasWalking, now, limit);
         }
 
         /// <summary>
