@@ -137,7 +137,7 @@ namespace HeadGait
         /// one person out 4.1 / 1.2 to 2.6 / 1.1 %), walking 92.4 % both; but standing up from the chair moves the tilt as
         /// much, and the timed up-and-go's walking shown fell 85.1 to 82.6 % (2 contacts: picking up 2.9 %, the timed
         /// up-and-go 83.8 %). THR keeps 0 (3 on top of its <see cref="StillStartContacts"/>: picking up 1.5 to 0.8 %, walking
-        /// 90.66 to 90.59 %, the timed up-and-go 82.7 to 81.5 %).
+        /// 90.66 to 90.59 %, the timed up-and-go shown walking 67.0 to 65.8 %).
         /// </summary>
         public int TiltMoveStartContacts = 0;
 
