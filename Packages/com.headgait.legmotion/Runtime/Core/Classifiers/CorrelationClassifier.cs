@@ -106,9 +106,11 @@ namespace HeadGait
         /// (<see cref="StepClockSettings.PoseFitDelay"/>). Leave-one-style-out on the pose recordings, 0 / 5 / 10 / 15 / 20 /
         /// 25 ms: 25.5 / 24.9 / 24.7 / 24.9 / 25.3 / 26.2 % (the same order at 72, 90 and 120 Hz; step recall 98.3 %
         /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
-        /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>).
+        /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>). A walk from a still head after standing is shown from its
+        /// second contact, one soon after the head's tilt moved from its third (<see cref="StepClockSettings.StillStartContacts"/>,
+        /// <see cref="StepClockSettings.TiltMoveStartContacts"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, TiltMoveStartContacts = 3 };
     }
 
     /// <summary>
@@ -323,7 +325,7 @@ namespace HeadGait
                 int t = recentTemplate[centre];
                 double contact = recentTime[centre] - template.Templates[t].ContactLag;
                 double since = contact - clock.LastContactTime;
-                // A walk not shown yet (StepClockSettings.StillStartContacts) is confirmed only by a full match.
+                // A walk not shown yet (StepClockSettings.StillStartContacts, TiltMoveStartContacts) is confirmed only by a full match.
                 bool due = clock.IsWalking(now) && !clock.Hidden(now) && since >= settings.DueFrom * clock.StepPeriod && since <= settings.DueUntil * clock.StepPeriod;
                 bool peak = r >= (due ? minCorrelation - settings.TrackingMargin : minCorrelation) && recentSpan[centre] >= settings.MinStepSpan;
                 for (int i = 0; peak && i < recentR.Length; i++)

@@ -83,9 +83,10 @@ namespace HeadGait
         /// unlike COR: leave-one-style-out on the pose recordings 0 / 5 / 10 / 15 / 20 / 25 ms scored 27.8 / 27.2 / 27.0 /
         /// 27.0 / 27.4 / 28.0 %, but its step recall fell (the avatar's 96.1 / 95.8 / 94.8 / 94.7 / 94.5 %; file CV, the
         /// classifier's, 96.7 to 94.4 % at 5 ms for 23.2 to 23.0 %): the first contact of each clip, where it starts its
-        /// walk, already shows the foot landed in its first walking frame.
+        /// walk, already shows the foot landed in its first walking frame. A walk from a still head after standing is shown
+        /// from its second contact (<see cref="StepClockSettings.StillStartContacts"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35, StillStartContacts = 2 };
 
         public ThresholdSettings Clone()
         {

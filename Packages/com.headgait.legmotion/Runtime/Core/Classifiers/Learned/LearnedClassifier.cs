@@ -42,7 +42,7 @@ namespace HeadGait
         double lastContactTime = double.NaN;
         double lastPosition;  // stride position of the last walking prediction
         double carriedSince = double.NaN; // when the shown class began to be carried across a swap (SwapCarrySteps); NaN when not
-        bool walkFromStill;   // whether the walk going on started from a still head (PhaseFilterSettings.StillStartMaxBend)
+        readonly StillStartGuard still = new StillStartGuard(); // the still-head start rule (PhaseFilterSettings.StillStartMaxBend)
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
@@ -232,7 +232,7 @@ namespace HeadGait
             refusedRun = 0;
             walkStartTime = double.NaN;
             carriedSince = double.NaN;
-            walkFromStill = false;
+            still.Reset();
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -344,7 +344,8 @@ namespace HeadGait
             ClassScores(outputs, scores);
             ToProbabilities(scores, probabilities);
             bool wearer = WearerProbabilities(outputs, wearerProbabilities);
-            bool bending = Bending(tilt.Change, now) || BendingFromStill(tilt, now);
+            bool bendingFromStill = BendingFromStill(tilt, now); // read every window: it follows the standing before a start
+            bool bending = Bending(tilt.Change, now) || bendingFromStill;
             if (bending) gate = GateVerdict.Refuses;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
@@ -413,7 +414,7 @@ namespace HeadGait
             if (!WasWalking)
             {
                 walkStartTime = now;
-                walkFromStill = tilt.SinceStill <= HeadTilt.StillRecent;
+                still.Started(now);
             }
             lastClass = best;
             // Within the segment, lean towards whichever neighbour scores higher.
@@ -483,9 +484,7 @@ namespace HeadGait
         bool BendingFromStill(HeadTiltReading tilt, double now)
         {
             double limit = filter?.Settings.StillStartMaxBend ?? 0;
-            if (!(limit > 0)) return false;
-            if (!WasWalking) return tilt.BentFromStill(limit);
-            return walkFromStill && now - walkStartTime < HeadTilt.StillStartProbation && tilt.Bends(limit);
+            return limit > 0 && still.Refuses(tilt, WasWalking, now, limit);
         }
 
         /// <summary>
