@@ -87,7 +87,7 @@ namespace HeadGait.Calibration
         /// this (0: always): a filled contact carries no side evidence and sits midway by the rhythm, which blurred the fit of
         /// a walker COR follows well. Held out (self-supervised, a minute's walk): bn *feminine* 19.7 to 16.6 %, *active* 23.4
         /// to 23.2 %, pooled 20.4 to 19.4 % (none 21.4 %), no style worse; the glasses' 20 wearers unchanged (one, d1-user5,
-        /// gives 79 sure steps of its own instead of 92 with filling, and the same figures); the 18 whose own contacts give fewer
+        /// gives 79 sure steps of its own instead of 92 filled and keeps the shipped COR; pooled figures the same); the 18 whose own contacts give fewer
         /// (at most 54), the calm wearers filling was made for, are filled in as before. 60: <see cref="CorThresholdSteps"/>, a minute's worth.
         /// </summary>
         public int FillMissedBelowSteps = 60;
