@@ -88,7 +88,7 @@ namespace HeadGait.Cli
                     notes.Add($"{fold.Name}: not fitted with the ankle trackers, scored with the shipped models ({e.Message})");
                 }
                 double feetSeconds = watch.Elapsed.TotalSeconds;
-                var sure = WearerAdaptation.SelfLabel(models, session.Head, selfSettings.LabelWithGateOpen, selfSettings.FillMissedSteps);
+                var sure = WearerAdaptation.SelfLabel(models, session.Head, selfSettings.LabelWithGateOpen, selfSettings.FillMissedSteps, selfSettings.FillMissedBelowSteps);
                 int sureSteps = sure.Sum(r => PhaseEvents.TruthSteps(r).Count);
                 WearerProfile self = null;
                 try
@@ -183,7 +183,7 @@ namespace HeadGait.Cli
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
         /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels,
-        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -207,6 +207,9 @@ namespace HeadGait.Cli
                     else if (key.StartsWith("shift-cap=", StringComparison.Ordinal)) a.LearnedShiftCap = Number(key.Substring(10));
                     else if (key.StartsWith("shift-prior=", StringComparison.Ordinal)) a.LearnedShiftPrior = Number(key.Substring(12));
                     else if (key.StartsWith("template-steps=", StringComparison.Ordinal)) a.CorTemplateSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(15)));
+                    else if (key.StartsWith("fill-below=", StringComparison.Ordinal)) a.FillMissedBelowSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(11)));
+                    else if (key.StartsWith("own-templates=", StringComparison.Ordinal)) a.CorOwnTemplates = (int)Math.Min(16, Number(key.Substring(14)));
+                    else if (key.StartsWith("short-margin=", StringComparison.Ordinal)) a.ShortWalkMargin = Number(key.Substring(13));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
                         switch (key)
@@ -222,7 +225,8 @@ namespace HeadGait.Cli
                             case "learned-channels": a.LearnedChannelGains = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, prior=STEPS, margin=SHARE, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
+                            case "cor-fuller": a.PreferFullerCorRefit = on; break;
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, cor-fuller, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -236,7 +240,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? "fill-missed" : null, $"margin {a.AcceptMargin:0.###}", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>
@@ -304,7 +308,7 @@ namespace HeadGait.Cli
             Console.WriteLine($"{"style",-14} {"step_s",6} {"clf",-6} {"none%",14} {"feet%",14} {"d_feet",7} {"self%",14} {"d_self",7}");
             string Cellf(Cell c) => c == null ? "-" : string.Format(CultureInfo.InvariantCulture, "{0:F1}/{1}", 100 * GaitMetrics.Pool(c.All).MisclassificationRate,
                 c.Standing.Count == 0 ? "-" : (100 * GaitMetrics.Pool(c.Standing).StandingAsWalking).ToString("F1", CultureInfo.InvariantCulture));
-            string Delta(Cell a, Cell b) => a == null || b == null ? "-" : (100 * (GaitMetrics.Pool(b.All).MisclassificationRate - GaitMetrics.Pool(a.All).MisclassificationRate)).ToString("+0.0;-0.0;+0.0", CultureInfo.InvariantCulture);
+            string Delta(Cell a, Cell b) => a == null || b == null ? "-" : (100 * (GaitMetrics.Pool(b.All).MisclassificationRate - GaitMetrics.Pool(a.All).MisclassificationRate)).ToString("+0.00;-0.00;+0.00", CultureInfo.InvariantCulture);
             Cell Get(string s, string c, string v) => cells.TryGetValue((s, c, v), out var x) ? x : null;
             foreach (var clf in names)
             {

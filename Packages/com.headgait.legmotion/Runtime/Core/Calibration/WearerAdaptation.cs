@@ -52,7 +52,7 @@ namespace HeadGait.Calibration
         /// 23.5 to 23.9 %), and the learned gate stays, as the sure stretches are where the wearer's steps were clearest.
         /// </summary>
         public static AdaptationSettings For(string source) => source == WearerProfile.SelfSupervised
-            ? new AdaptationSettings { Threshold = false, LearnedGate = false, LearnedRefit = false, CorTemplateSteps = SelfSupervisedTemplateSteps }
+            ? new AdaptationSettings { Threshold = false, LearnedGate = false, LearnedRefit = false, CorTemplateSteps = SelfSupervisedTemplateSteps, PreferFullerCorRefit = false, ShortWalkMargin = double.NaN, CorOwnTemplates = 1 }
             : new AdaptationSettings();
 
         /// <summary>Steps at which THR's refitted values and the trained ones weigh the same (shrinks a short walk's fit towards training).</summary>
@@ -82,6 +82,41 @@ namespace HeadGait.Calibration
         public bool LabelWithGateOpen = true;
         /// <summary>Self-supervised: a step COR missed in a steady rhythm (a gap of two steps) is filled in (<see cref="WearerAdaptation.SelfLabel"/>).</summary>
         public bool FillMissedSteps = true;
+        /// <summary>
+        /// With <see cref="FillMissedSteps"/>, missed steps are filled in only when COR's own contacts give fewer sure steps than
+        /// this (0: always): a filled contact carries no side evidence and sits midway by the rhythm, which blurred the fit of
+        /// a walker COR follows well. Held out (self-supervised, a minute's walk): bn *feminine* 19.7 to 16.6 %, *active* 23.4
+        /// to 23.2 %, pooled 20.4 to 19.4 % (none 21.4 %), no style worse; the glasses' 20 wearers unchanged (one, d1-user5,
+        /// gives 79 sure steps of its own instead of 92 filled and keeps the shipped COR; pooled figures the same); the 18 whose own contacts give fewer
+        /// (at most 54), the calm wearers filling was made for, are filled in as before. 60: <see cref="CorThresholdSteps"/>, a minute's worth.
+        /// </summary>
+        public int FillMissedBelowSteps = 60;
+        /// <summary>
+        /// Of COR's candidates that beat the trained COR on the walk by the margin, keep the most refitted (else the one that
+        /// scores the walk best). With ankle trackers: their labels place each phase's end a little off the motion capture's,
+        /// so between two candidates that both pay, the walk's own score did not tell which scored the wearer's other walks
+        /// better (held-out bn *feminine*: the wearer's step alone 26.6 % on the walk, 19.9 % on the other walks; refitted
+        /// from 103 steps 27.2 and 15.9 %; scoring each kind fitted on one half of the walk on the other half chose the same
+        /// as the walk's own score); it told well whether a candidate beats the trained one (bn *masculine*: neither, and
+        /// both scored its other walks worse). Self-supervised: off.
+        /// </summary>
+        public bool PreferFullerCorRefit = true;
+        /// <summary>
+        /// On a walk of fewer than <see cref="CorThresholdSteps"/> steps, a COR candidate must beat the trained COR on the walk
+        /// by this much (misclassification; NaN: <see cref="AcceptMargin"/> only): one clip of 8-13 steps scores it on few
+        /// steps. Held-out (in-sample as a choice): bn1 *feminine*'s one clip 53.6 to 51.0 % with its own step, its other
+        /// walks 41.3 to 41.9 %; *childish*, *giant* and *musical* gained 10-22 points on their clip and 7-10 on their other
+        /// walks. Self-supervised: NaN.
+        /// </summary>
+        public double ShortWalkMargin = 0.05;
+        /// <summary>
+        /// Mean steps the wearer's own steps make on a walk of <see cref="CorThresholdSteps"/> or more (clustered as training
+        /// clusters; a shorter walk makes one), added in front of the trained ones. With ankle trackers, held-out (in-sample
+        /// as a choice among 1-3, added or in place of the trained ones): a minute's straight walks and turns gave bn
+        /// *feminine* 15.9 to 15.2 % with two; three, or the wearer's steps alone in the refitted candidate, showed bn
+        /// *masculine* worse than uncalibrated (up to +2.3 points). Self-supervised: 1 (two cost bn *feminine* 19.7 to 25.0 %).
+        /// </summary>
+        public int CorOwnTemplates = 2;
     }
 
     /// <summary>
@@ -128,44 +163,11 @@ namespace HeadGait.Calibration
             var training = GaitTraining.WithAugmentation(walk, AugmentedCopies);
             var baseCor = models.Correlation;
             var baseThr = models.Threshold;
-            var map = baseCor.PhaseMap;
 
             bool ownStep = a.CorTemplate && steps >= a.CorTemplateSteps;
             var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseCor.Gate;
-            var templates = new List<StepTemplate>();
-            if (ownStep) templates.AddRange(CorrelationTemplate.Train(training, map, corGate, 1).Templates);
-            foreach (var t in baseCor.Templates)
-                if (templates.Count < 16) templates.Add(t);
-            var cor = baseCor.With(templates: templates, gate: corGate);
-            // Candidates, from the least refitted: the wearer's step alone (its lag the trained templates' median), then
-            // with the threshold, lags and clock lead recalibrated on the walk (a long walk's, or where asked).
-            var corCandidates = new List<CorrelationTemplate>();
-            if (ownStep)
-            {
-                var lags = new List<double>();
-                foreach (var t in baseCor.Templates) lags.Add(t.ContactLag);
-                var own = new List<StepTemplate>(templates);
-                own[0] = own[0].WithLag(GaitMetrics.Median(lags));
-                corCandidates.Add(cor.With(templates: own));
-            }
             bool refitThreshold = a.CorThreshold || steps >= a.CorThresholdSteps, refitLead = a.CorLead || steps >= a.CorThresholdSteps;
-            if (refitThreshold || refitLead)
-            {
-                var refit = ownStep ? cor : baseCor.With(gate: corGate);
-                if (refitThreshold)
-                {
-                    refit = CorrelationClassifier.Calibrate(refit, training);
-                    refit = refit.With(minCorrelation: Math.Max(refit.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
-                }
-                else if (ownStep) refit = corCandidates[0];
-                if (refitLead)
-                {
-                    var fitted = refit;
-                    refit = refit.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
-                }
-                corCandidates.Add(refit);
-            }
-
+            var corCandidates = CorCandidates(baseCor, corGate, training, ownStep, refitThreshold, refitLead, steps >= a.CorThresholdSteps ? Math.Max(1, a.CorOwnTemplates) : 1);
             var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseThr.Gate;
             var thr = baseThr.Clone();
             thr.Gate = thrGate;
@@ -182,23 +184,7 @@ namespace HeadGait.Calibration
             var shippedCor = baseCor.With(gate: corGate);
             var shippedThr = baseThr.Clone();
             shippedThr.Gate = thrGate;
-            // COR: the candidate that scores the walk best, where it beats the trained COR by the margin (NaN: the most refitted).
-            cor = shippedCor;
-            if (double.IsNaN(a.AcceptMargin))
-            {
-                if (corCandidates.Count > 0) cor = corCandidates[corCandidates.Count - 1];
-            }
-            else
-            {
-                double best = Misclassification(() => new CorrelationClassifier(shippedCor), walk) - a.AcceptMargin;
-                foreach (var candidate in corCandidates)
-                {
-                    double score = Misclassification(() => new CorrelationClassifier(candidate), walk);
-                    if (score > best) continue;
-                    best = score;
-                    cor = candidate;
-                }
-            }
+            var cor = ChooseCor(shippedCor, corCandidates, walk, a, steps);
             if (!Pays(() => new ThresholdClassifier(thr), () => new ThresholdClassifier(shippedThr), walk, a.AcceptMargin)) thr = shippedThr;
 
             var learnedGate = LearnedGate(models);
@@ -236,6 +222,73 @@ namespace HeadGait.Calibration
                 Refit(profile, models.Blstm, f => new BlstmClassifier(f, new PhaseFilterSettings()), walk, a);
             }
             return profile;
+        }
+
+        /// <summary>
+        /// COR's candidates from a walk, from the least refitted: the wearer's own mean steps (<paramref name="ownCount"/>)
+        /// added in front of the trained ones (their lag the trained templates' median), then with the threshold (never below
+        /// the trained one), lags and clock lead recalibrated on the walk (where <paramref name="refitThreshold"/> or
+        /// <paramref name="refitLead"/>).
+        /// </summary>
+        static List<CorrelationTemplate> CorCandidates(CorrelationTemplate baseCor, WalkingGate corGate, IReadOnlyList<Recording> training, bool ownStep, bool refitThreshold, bool refitLead, int ownCount)
+        {
+            var ownTemplates = ownStep ? CorrelationTemplate.Train(training, baseCor.PhaseMap, corGate, ownCount).Templates : new List<StepTemplate>();
+            var templates = new List<StepTemplate>(ownTemplates);
+            foreach (var t in baseCor.Templates)
+                if (templates.Count < 16) templates.Add(t);
+            var cor = baseCor.With(templates: templates, gate: corGate);
+            var candidates = new List<CorrelationTemplate>();
+            if (ownStep)
+            {
+                var lags = new List<double>();
+                foreach (var t in baseCor.Templates) lags.Add(t.ContactLag);
+                var own = new List<StepTemplate>(templates);
+                for (int k = 0; k < ownTemplates.Count; k++) own[k] = own[k].WithLag(GaitMetrics.Median(lags));
+                candidates.Add(cor.With(templates: own));
+            }
+            if (refitThreshold || refitLead)
+            {
+                var refit = ownStep ? cor : baseCor.With(gate: corGate);
+                if (refitThreshold)
+                {
+                    refit = CorrelationClassifier.Calibrate(refit, training);
+                    refit = refit.With(minCorrelation: Math.Max(refit.MinCorrelation, baseCor.MinCorrelation - MaxThresholdDrop));
+                }
+                else if (ownStep) refit = candidates[0];
+                if (refitLead)
+                {
+                    var fitted = refit;
+                    refit = refit.With(clockLead: GaitTraining.ContactTiming(() => new CorrelationClassifier(fitted), training));
+                }
+                candidates.Add(refit);
+            }
+            return candidates;
+        }
+
+        /// <summary>
+        /// Which of COR's candidates the profile keeps: the trained <paramref name="shipped"/> unless a candidate beats it on
+        /// the walk by the settings' margin (<see cref="AdaptationSettings.ShortWalkMargin"/> on a short walk); of those that
+        /// do, the most refitted (<see cref="AdaptationSettings.PreferFullerCorRefit"/>) or the best scoring. NaN margin: the
+        /// most refitted, paying or not.
+        /// </summary>
+        static CorrelationTemplate ChooseCor(CorrelationTemplate shipped, List<CorrelationTemplate> candidates, IReadOnlyList<Recording> walk, AdaptationSettings a, int steps)
+        {
+            if (candidates.Count == 0) return shipped;
+            if (double.IsNaN(a.AcceptMargin)) return candidates[candidates.Count - 1];
+            double margin = steps < a.CorThresholdSteps && !double.IsNaN(a.ShortWalkMargin) ? Math.Max(a.AcceptMargin, a.ShortWalkMargin) : a.AcceptMargin;
+            double trained = Misclassification(() => new CorrelationClassifier(shipped), walk);
+            var chosen = shipped;
+            double best = trained - margin;
+            foreach (var c in candidates)
+            {
+                var candidate = c;
+                double score = Misclassification(() => new CorrelationClassifier(candidate), walk);
+                bool pays = score <= trained - margin;
+                if (a.PreferFullerCorRefit ? !pays : score > best) continue;
+                best = score;
+                chosen = candidate;
+            }
+            return chosen;
         }
 
         /// <summary>
@@ -349,12 +402,13 @@ namespace HeadGait.Calibration
         /// <summary>
         /// Self-supervised labels (no foot references): the walk replayed through the shipped COR (its walking gate open
         /// where <paramref name="gateOpen"/>; a step it missed in a steady rhythm filled in where <paramref name="fillMissed"/>,
-        /// see <see cref="WithMissedSteps"/>); every stretch of at least
+        /// see <see cref="WithMissedSteps"/>, and, when <paramref name="fillBelowSteps"/> is more than 0, only where COR's own
+        /// contacts give fewer sure steps than that); every stretch of at least
         /// <see cref="MinSureContacts"/> contacts in a clear rhythm (each step within <see cref="RhythmTolerance"/> of the
         /// stretch's median, 0.3 to 1 s) becomes a labelled walking recording, its feet alternating from the side COR
         /// named most often and each foot's phases spread over its stride by the trained phase map. Empty when none is sure.
         /// </summary>
-        public static List<Recording> SelfLabel(GaitModels models, Recording walk, bool gateOpen = true, bool fillMissed = true)
+        public static List<Recording> SelfLabel(GaitModels models, Recording walk, bool gateOpen = true, bool fillMissed = true, int fillBelowSteps = 0)
         {
             if (models?.Correlation == null) throw new InvalidOperationException("Self-supervised calibration needs the trained COR template.");
             var cor = new CorrelationClassifier(gateOpen ? models.Correlation.With(gate: WalkingGate.Open) : models.Correlation);
@@ -362,7 +416,20 @@ namespace HeadGait.Calibration
             cor.ContactDetected += (t, e, r, k) => contacts.Add((t, e));
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
             foreach (var s in walk.Samples) pre.Push(s.Imu, w => cor.Classify(w));
-            if (fillMissed) contacts = WithMissedSteps(contacts);
+            if (fillMissed && fillBelowSteps > 0)
+            {
+                // Filled in only where COR's own contacts give too few sure steps (AdaptationSettings.FillMissedBelowSteps).
+                var unfilled = SureStretches(walk, models.Correlation.PhaseMap, contacts);
+                int steps = 0;
+                foreach (var r in unfilled) steps += PhaseEvents.TruthSteps(r).Count;
+                if (steps >= fillBelowSteps) return unfilled;
+            }
+            return SureStretches(walk, models.Correlation.PhaseMap, fillMissed ? WithMissedSteps(contacts) : contacts);
+        }
+
+        /// <summary>The stretches of steady contacts as labelled walking recordings (<see cref="SelfLabel"/>).</summary>
+        static List<Recording> SureStretches(Recording walk, PhaseMap map, List<(double time, double evidence)> contacts)
+        {
             var stretches = new List<Recording>();
             int start = 0;
             for (int i = 1; i <= contacts.Count; i++)
@@ -370,7 +437,7 @@ namespace HeadGait.Calibration
                 bool breaks = i == contacts.Count || !(contacts[i].time - contacts[i - 1].time >= 0.3 && contacts[i].time - contacts[i - 1].time <= 1.0);
                 if (!breaks) continue;
                 // Within the run [start, i), keep the longest part whose steps stay near its median step.
-                AddSure(walk, models.Correlation.PhaseMap, contacts, start, i, stretches);
+                AddSure(walk, map, contacts, start, i, stretches);
                 start = i;
             }
             return stretches;
