@@ -163,6 +163,63 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
+        /// Standing still (head level) until 1.6 s, the head pitching <paramref name="degrees"/> down over 0.3 s, staying down
+        /// <paramref name="hold"/> seconds and coming back up over 0.3 s, then, from <paramref name="bumpsAt"/> seconds,
+        /// <paramref name="bumps"/> heel-strike-like bumps 0.5 s apart with the head swaying to alternate sides: a glance to
+        /// the floor, then a shift of the feet (one bump) or a walk (several). The bumps come within 5 s of the stream's start
+        /// and less than 40 degrees of tilt move, so neither <see cref="StepClockSettings.StillStartContacts"/> nor
+        /// <see cref="StepClockSettings.TiltMoveStartContacts"/> holds them back.
+        /// </summary>
+        static Recording StillBendThenBumps(double degrees, double hold, double bumpsAt, int bumps)
+        {
+            const double down = 1.6, move = 0.3;
+            double up = down + move + hold;
+            var rows = new List<RecordedSample>();
+            for (int i = 0; i < (bumpsAt + 0.5 * bumps + 4) * 100; i++)
+            {
+                double t = i * 0.01, pitch = 0, bump = 0, sway = 0;
+                if (t >= down && t < down + move) pitch = (t - down) / move;
+                else if (t >= down + move && t < up) pitch = 1;
+                else if (t >= up && t < up + move) pitch = 1 - (t - up) / move;
+                for (int k = 0; k < bumps; k++)
+                {
+                    double d = t - bumpsAt - k * 0.5;
+                    bump += 3 * Math.Exp(-d * d / (2 * 0.04 * 0.04));
+                }
+                if (t >= bumpsAt && t < bumpsAt + 0.5 * bumps) sway = 0.8 * Math.Sin(Math.PI * (t - bumpsAt) / 0.5);
+                double angle = pitch * degrees * Math.PI / 180, a = G + bump;
+                rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), sway + 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
+            }
+            return new Recording("a bend from a still head, then bumps", rows);
+        }
+
+        /// <summary>
+        /// COR waits for a second contact when a walk starts within <see cref="HeadTilt.BendStartRecent"/> of the head's pitch
+        /// lying more than <see cref="HeadTilt.BendStartBend"/> from a still head's (<see cref="StepClockSettings.BendStartContacts"/>):
+        /// one bump after a 38-degree glance to the floor is no walk, where without the rule (and with the head level) it is
+        /// one; six bumps after it walk, shown from their second, with the walk they are without the rule.
+        /// </summary>
+        [Test]
+        public void CorShowsNoWalkForOneBumpAfterTheHeadBentFromStill()
+        {
+            IGaitClassifier Cor(int contacts)
+            {
+                var settings = new CorrelationSettings();
+                if (contacts >= 0) settings.Clock.BendStartContacts = contacts;
+                return new CorrelationClassifier(Models.Correlation.With(gate: WalkingGate.Open), settings);
+            }
+            var bent = StillBendThenBumps(38, 0.5, 4.6, 1);
+            Assert.That(Walks(Cor(0), bent).Walking, Is.GreaterThan(30), "without the rule the bump walks");
+            Assert.That(Walks(Cor(-1), StillBendThenBumps(0, 0.5, 4.6, 1)).Walking, Is.GreaterThan(30), "the bump with the head level walks as shipped");
+            Assert.That(Walks(Cor(-1), bent).Walking, Is.EqualTo(0), "as shipped, after the bend it does not");
+            var without = Walks(Cor(0), StillBendThenBumps(38, 0.5, 4.6, 6));
+            var with = Walks(Cor(-1), StillBendThenBumps(38, 0.5, 4.6, 6));
+            Assert.That(with.Longest, Is.GreaterThan(250), "six bumps after the bend walk");
+            Assert.That(with.First - without.First, Is.InRange(0.4, 0.6), "from their second contact, a step later");
+            Assert.That(without.Walking - with.Walking, Is.InRange(40, 60), "the walk otherwise as without the rule");
+        }
+
+        /// <summary>
         /// COR's false walks in still activities mostly began with a step-like bump from a still head and took no second step
         /// (<see cref="StepClockSettings.StillStartContacts"/>): on the real glasses' picking-up and standing recordings
         /// (shipped models) COR shows a fifth less time as walking with the rule (2 contacts) than without.

@@ -107,10 +107,11 @@ namespace HeadGait
         /// 25 ms: 25.5 / 24.9 / 24.7 / 24.9 / 25.3 / 26.2 % (the same order at 72, 90 and 120 Hz; step recall 98.3 %
         /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
         /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>). A walk from a still head after standing is shown from its
-        /// second contact, one soon after the head's tilt moved from its third (<see cref="StepClockSettings.StillStartContacts"/>,
-        /// <see cref="StepClockSettings.TiltMoveStartContacts"/>).
+        /// second contact, one soon after the head's tilt moved from its third, one soon after the head bent from a still head
+        /// from its second (<see cref="StepClockSettings.StillStartContacts"/>, <see cref="StepClockSettings.TiltMoveStartContacts"/>,
+        /// <see cref="StepClockSettings.BendStartContacts"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, TiltMoveStartContacts = 3 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, TiltMoveStartContacts = 3, BendStartContacts = 2 };
     }
 
     /// <summary>
