@@ -45,6 +45,7 @@ namespace HeadGait
         int refusedRun;
         double walkStartTime = double.NaN;
         double lastShownWalk = double.NaN; // when a walking prediction was last shown (PhaseFilterSettings.FreshWalkShownAfter)
+        double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -224,6 +225,7 @@ namespace HeadGait
             carriedSince = double.NaN;
             walkFromStill = false;
             lastShownWalk = double.NaN;
+            lastSurePass = double.NaN;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -331,6 +333,7 @@ namespace HeadGait
             bool wearer = WearerProbabilities(scores, wearerProbabilities);
             bool bending = Bending(tilt.Change, now) || BendingFromStill(tilt, now);
             if (bending) gate = GateVerdict.Refuses;
+            if (gate == GateVerdict.SurelyWalking) lastSurePass = now;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
             // While the head's rhythm holds a walk in progress, the model decides as if the gate had passed the window;
@@ -445,10 +448,12 @@ namespace HeadGait
 
         /// <summary>
         /// Whether the walk going on is kept from showing (<see cref="PhaseFilterSettings.FreshWalkShownAfter"/>): it began
-        /// less than that long ago, and no walk was shown within <see cref="PhaseFilterSettings.FreshWalkGap"/> before now.
+        /// less than that long ago, the gate has not been sure of it, and no walk was shown within
+        /// <see cref="PhaseFilterSettings.FreshWalkGap"/> before now.
         /// </summary>
         bool TooFreshToShow(double now)
-            => filter != null && now - walkStartTime < filter.Settings.FreshWalkShownAfter && !(now - lastShownWalk < filter.Settings.FreshWalkGap);
+            => filter != null && now - walkStartTime < filter.Settings.FreshWalkShownAfter && !(lastSurePass >= walkStartTime)
+               && !(now - lastShownWalk < filter.Settings.FreshWalkGap);
 
         /// <summary>The walking class of highest probability (ties to the lower class).</summary>
         int MostLikelyWalking(double[] p)

@@ -127,7 +127,8 @@ namespace HeadGait
 
         /// <summary>
         /// A walk the classifier begins with no walk shown for <see cref="FreshWalkGap"/> seconds is shown only once it has
-        /// lasted this long (s); until then the classifier reports standing while the time filter follows the walk, so it is
+        /// lasted this long (s), or once the gate is sure of it (<see cref="SureWalkingLogOdds"/>; the still activities' false
+        /// walks are not such walks); until then the classifier reports standing while the time filter follows the walk, so it is
         /// shown in phase. The models' filtered belief flickers to standing within a walk's first windows: each flicker was
         /// a start the avatar began and dropped before the lead foot landed, and most of the still activities' false walks
         /// are that short. Real glasses (`realworld`, avatar; in-sample), SVM / BLSTM with <see cref="YoungWalkStandingWeight"/>:
