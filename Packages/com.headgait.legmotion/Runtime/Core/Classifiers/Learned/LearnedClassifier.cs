@@ -344,6 +344,8 @@ namespace HeadGait
             ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate, young);
             if (wearer) ApplyGate(wearerProbabilities, refused && !heldByRhythm, ridden, gate, young);
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
+            // What came before the stream's start is not known: its first FreshWalkGap seconds are not time without a walk.
+            if (double.IsNaN(lastTime)) lastShownWalk = now;
             lastTime = now;
             var p = probabilities;
             int best;
@@ -449,7 +451,7 @@ namespace HeadGait
         /// <summary>
         /// Whether the walk going on is kept from showing (<see cref="PhaseFilterSettings.FreshWalkShownAfter"/>): it began
         /// less than that long ago, the gate has not been sure of it, and no walk was shown within
-        /// <see cref="PhaseFilterSettings.FreshWalkGap"/> before now.
+        /// <see cref="PhaseFilterSettings.FreshWalkGap"/> before now, nor did the stream start (or restart) within it.
         /// </summary>
         bool TooFreshToShow(double now)
             => filter != null && now - walkStartTime < filter.Settings.FreshWalkShownAfter && !(lastSurePass >= walkStartTime)

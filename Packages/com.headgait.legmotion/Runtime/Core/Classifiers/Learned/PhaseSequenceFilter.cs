@@ -137,8 +137,9 @@ namespace HeadGait
         public double FreshWalkShownAfter = 0.15;
 
         /// <summary>
-        /// Seconds without a walk shown after which a walk is fresh (<see cref="FreshWalkShownAfter"/>); one resumed sooner,
-        /// within a bout, is shown at once (BLSTM on the glasses at 1 s rather than 3: walking shown 0.7-1.4 points lower, the
+        /// Seconds without a walk shown after which a walk is fresh (<see cref="FreshWalkShownAfter"/>), counted from the
+        /// stream's start at the earliest (what came before it is not known; the labelled clips start mid-walk: SVM style CV
+        /// 21.2 / 19.5 to 22.1 / 20.4 % counted from before it); one resumed sooner, within a bout, is shown at once (BLSTM on the glasses at 1 s rather than 3: walking shown 0.7-1.4 points lower, the
         /// start of bouts met standing 0.09 s later).
         /// </summary>
         public double FreshWalkGap = 3;
