@@ -46,6 +46,8 @@ namespace HeadGait
         double stepPeriod;
         int refusedRun;
         double walkStartTime = double.NaN;
+        double lastShownWalk = double.NaN; // when a walking prediction was last shown (PhaseFilterSettings.FreshWalkShownAfter)
+        double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -233,6 +235,8 @@ namespace HeadGait
             walkStartTime = double.NaN;
             carriedSince = double.NaN;
             still.Reset();
+            lastShownWalk = double.NaN;
+            lastSurePass = double.NaN;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -347,15 +351,19 @@ namespace HeadGait
             bool bendingFromStill = BendingFromStill(tilt, now); // read every window: it follows the standing before a start
             bool bending = Bending(tilt.Change, now) || bendingFromStill;
             if (bending) gate = GateVerdict.Refuses;
+            if (gate == GateVerdict.SurelyWalking) lastSurePass = now;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
             refusedRun = refused ? refusedRun + 1 : 0;
             // While the head's rhythm holds a walk in progress, the model decides as if the gate had passed the window;
             // the refusals still count, so one the rhythm no longer holds ends the walk at once.
             bool heldByRhythm = gate == GateVerdict.RefusesInStepRhythm && filter != null && filter.Settings.HoldOnRhythm && WasWalking;
             bool ridden = refused && !heldByRhythm && filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
-            ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate);
-            if (wearer) ApplyGate(wearerProbabilities, refused && !heldByRhythm, ridden, gate);
+            bool young = WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
+            ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate, young);
+            if (wearer) ApplyGate(wearerProbabilities, refused && !heldByRhythm, ridden, gate, young);
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
+            // What came before the stream's start is not known: its first FreshWalkGap seconds are not time without a walk.
+            if (double.IsNaN(lastTime)) lastShownWalk = now;
             lastTime = now;
             var p = probabilities;
             int best;
@@ -423,6 +431,8 @@ namespace HeadGait
             double lean = (after - before) / (p[best] + before + after + 1e-12);
             double s = carried ? carriedPosition : Segments.Start(best) + Segments.Length(best) * (0.5 + 0.45 * Math.Max(-1, Math.Min(1, lean)));
             lastPosition = PhaseMap.Wrap(s);
+            if (TooFreshToShow(now)) return GaitPrediction.Standing(now, p[Segments.StandingClass]);
+            lastShownWalk = now;
             double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
             return GaitPrediction.Walking(now, s, shownPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
@@ -430,9 +440,10 @@ namespace HeadGait
         /// <summary>
         /// What the gate's verdict does to a window's probabilities: a refusal leaves walking
         /// <see cref="PhaseFilterSettings.RefusedWalkingShare"/> of its probability where the walk is ridden through, none
-        /// otherwise; a sure pass during a walk weighs standing down (<see cref="PhaseFilterSettings.SureWalkingStandingWeight"/>).
+        /// otherwise; a sure pass during a walk weighs standing down (<see cref="PhaseFilterSettings.SureWalkingStandingWeight"/>),
+        /// and so does any pass during a <paramref name="young"/> one (<see cref="PhaseFilterSettings.YoungWalkStandingWeight"/>).
         /// </summary>
-        void ApplyGate(double[] probabilities, bool refused, bool ridden, GateVerdict gate)
+        void ApplyGate(double[] probabilities, bool refused, bool ridden, GateVerdict gate, bool young)
         {
             if (refused)
             {
@@ -445,15 +456,24 @@ namespace HeadGait
                 }
                 probabilities[Segments.StandingClass] = 1 - walking;
             }
-            else if (gate == GateVerdict.SurelyWalking && filter != null && WasWalking)
+            else if (filter != null && WasWalking && (gate == GateVerdict.SurelyWalking || young && gate == GateVerdict.Passes))
             {
-                probabilities[Segments.StandingClass] *= filter.Settings.SureWalkingStandingWeight;
+                probabilities[Segments.StandingClass] *= gate == GateVerdict.SurelyWalking ? filter.Settings.SureWalkingStandingWeight : filter.Settings.YoungWalkStandingWeight;
                 double sum = 0;
                 for (int k = 0; k < probabilities.Length; k++) sum += probabilities[k];
                 if (sum > 0)
                     for (int k = 0; k < probabilities.Length; k++) probabilities[k] /= sum;
             }
         }
+
+        /// <summary>
+        /// Whether the walk going on is kept from showing (<see cref="PhaseFilterSettings.FreshWalkShownAfter"/>): it began
+        /// less than that long ago, the gate has not been sure of it, and no walk was shown within
+        /// <see cref="PhaseFilterSettings.FreshWalkGap"/> before now, nor did the stream start (or restart) within it.
+        /// </summary>
+        bool TooFreshToShow(double now)
+            => filter != null && now - walkStartTime < filter.Settings.FreshWalkShownAfter && !(lastSurePass >= walkStartTime)
+               && !(now - lastShownWalk < filter.Settings.FreshWalkGap);
 
         /// <summary>The walking class of highest probability (ties to the lower class).</summary>
         int MostLikelyWalking(double[] p)
