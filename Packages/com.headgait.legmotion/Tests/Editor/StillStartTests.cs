@@ -117,25 +117,34 @@ namespace HeadGait.Tests
         /// bumps of straightening up and shifting the feet after it. <paramref name="degrees"/> 0: the bumps alone.
         /// </summary>
         static Recording BendThenBumps(double degrees, int bumps)
+            => HeadBendThenBumps("a bend, then bumps", degrees, down: 4, moveDown: 0.8, hold: 1, moveUp: 1, bumpsAt: 8.5, bumps, seconds: 14);
+
+        /// <summary>
+        /// Standing still (head level) until <paramref name="down"/> s, the head pitching <paramref name="degrees"/> down over
+        /// <paramref name="moveDown"/> s, staying down <paramref name="hold"/> s and coming back up over <paramref name="moveUp"/> s;
+        /// from <paramref name="bumpsAt"/> s, <paramref name="bumps"/> heel-strike-like bumps 0.5 s apart with the head swaying
+        /// to alternate sides; <paramref name="seconds"/> long at 100 Hz.
+        /// </summary>
+        static Recording HeadBendThenBumps(string name, double degrees, double down, double moveDown, double hold, double moveUp, double bumpsAt, int bumps, double seconds)
         {
-            const double down = 4, up = 6.8, first = up + 1.7;
+            double up = down + moveDown + hold;
             var rows = new List<RecordedSample>();
-            for (int i = 0; i < 1400; i++)
+            for (int i = 0; i < seconds * 100; i++)
             {
                 double t = i * 0.01, pitch = 0, bump = 0, sway = 0;
-                if (t >= down && t < down + 0.8) pitch = (t - down) / 0.8;
-                else if (t >= down + 0.8 && t < up - 1) pitch = 1;
-                else if (t >= up - 1 && t < up) pitch = up - t;
+                if (t >= down && t < down + moveDown) pitch = (t - down) / moveDown;
+                else if (t >= down + moveDown && t < up) pitch = 1;
+                else if (t >= up && t < up + moveUp) pitch = 1 - (t - up) / moveUp;
                 for (int k = 0; k < bumps; k++)
                 {
-                    double d = t - first - k * 0.5;
+                    double d = t - bumpsAt - k * 0.5;
                     bump += 3 * Math.Exp(-d * d / (2 * 0.04 * 0.04));
                 }
-                if (t >= first && t < first + 0.5 * bumps) sway = 0.8 * Math.Sin(Math.PI * (t - first) / 0.5);
+                if (t >= bumpsAt && t < bumpsAt + 0.5 * bumps) sway = 0.8 * Math.Sin(Math.PI * (t - bumpsAt) / 0.5);
                 double angle = pitch * degrees * Math.PI / 180, a = G + bump;
                 rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), sway + 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
             }
-            return new Recording("a bend, then bumps", rows);
+            return new Recording(name, rows);
         }
 
         /// <summary>
@@ -171,27 +180,7 @@ namespace HeadGait.Tests
         /// <see cref="StepClockSettings.TiltMoveStartContacts"/> holds them back.
         /// </summary>
         static Recording StillBendThenBumps(double degrees, double hold, double bumpsAt, int bumps)
-        {
-            const double down = 1.6, move = 0.3;
-            double up = down + move + hold;
-            var rows = new List<RecordedSample>();
-            for (int i = 0; i < (bumpsAt + 0.5 * bumps + 4) * 100; i++)
-            {
-                double t = i * 0.01, pitch = 0, bump = 0, sway = 0;
-                if (t >= down && t < down + move) pitch = (t - down) / move;
-                else if (t >= down + move && t < up) pitch = 1;
-                else if (t >= up && t < up + move) pitch = 1 - (t - up) / move;
-                for (int k = 0; k < bumps; k++)
-                {
-                    double d = t - bumpsAt - k * 0.5;
-                    bump += 3 * Math.Exp(-d * d / (2 * 0.04 * 0.04));
-                }
-                if (t >= bumpsAt && t < bumpsAt + 0.5 * bumps) sway = 0.8 * Math.Sin(Math.PI * (t - bumpsAt) / 0.5);
-                double angle = pitch * degrees * Math.PI / 180, a = G + bump;
-                rows.Add(new RecordedSample(new ImuSample(t, a * Math.Sin(angle), sway + 0.05 * Math.Sin(7 * t), a * Math.Cos(angle))));
-            }
-            return new Recording("a bend from a still head, then bumps", rows);
-        }
+            => HeadBendThenBumps("a bend from a still head, then bumps", degrees, down: 1.6, moveDown: 0.3, hold, moveUp: 0.3, bumpsAt, bumps, seconds: bumpsAt + 0.5 * bumps + 4);
 
         /// <summary>
         /// COR waits for a second contact when a walk starts within <see cref="HeadTilt.BendStartRecent"/> of the head's pitch
