@@ -44,15 +44,13 @@ namespace HeadGait.Tests
             {
                 if (from < 0) from = begin;
                 var c = Create(models, kind, s);
-                var scores = new double[c.Segments.ClassCount];
+                var outputs = new double[c.OutputCount];
                 var shown = new List<bool>();
                 for (int i = 0; i < begin + 300; i++)
                 {
                     bool walking = i >= from && i < from + walkingWindows;
-                    Array.Clear(scores, 0, scores.Length);
-                    // Votes for the SVM (its votes become probabilities), probabilities for the BLSTM: one class either way.
-                    scores[walking ? 0 : c.Segments.StandingClass] = kind == "svm" ? c.Segments.ClassCount - 1 : 1;
-                    shown.Add(c.ClassifyScored(scores, 0, 0.01 * i, 100, walking ? GateVerdict.Passes : GateVerdict.Refuses).IsWalking);
+                    SureOutputs.Write(c, walking ? 0 : c.Segments.StandingClass, outputs);
+                    shown.Add(c.ClassifyScored(outputs, 0, 0.01 * i, 100, walking ? GateVerdict.Passes : GateVerdict.Refuses).IsWalking);
                 }
                 return shown;
             }
@@ -68,15 +66,15 @@ namespace HeadGait.Tests
         /// <summary>A recording's windows as the classifier scored them, with the gate's verdict, the tilt and the rhythm.</summary>
         sealed class ScoredRecording
         {
-            public double[] Scores;
+            public double[] Outputs; // window by window, as the evaluator gives them (LearnedClassifier.OutputCount each)
             public readonly List<(double Time, double Rate, GateVerdict Gate, HeadTiltReading Tilt, double RhythmPeriod)> Windows = new List<(double, double, GateVerdict, HeadTiltReading, double)>();
         }
 
         static ScoredRecording Score(LearnedClassifier c, Recording r)
         {
             var result = new ScoredRecording();
-            var scores = new List<double>();
-            var row = new double[c.Segments.ClassCount];
+            var outputs = new List<double>();
+            var row = new double[c.OutputCount];
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(c.WindowLength, StepRhythm.HistorySamples) });
             foreach (var s in r.Samples)
                 pre.Push(s.Imu, w =>
@@ -85,10 +83,10 @@ namespace HeadGait.Tests
                     var gate = c.JudgeGate(w);
                     var tilt = c.ReadTilt(w);
                     c.Network.Evaluate(features, 1, row);
-                    scores.AddRange(row);
+                    outputs.AddRange(row);
                     result.Windows.Add((w.EndTime, w.SampleRate, gate, tilt, c.RhythmPeriod));
                 });
-            result.Scores = scores.ToArray();
+            result.Outputs = outputs.ToArray();
             return result;
         }
 
@@ -100,7 +98,7 @@ namespace HeadGait.Tests
             for (int i = 0; i < r.Windows.Count; i++)
             {
                 var w = r.Windows[i];
-                bool now = c.ClassifyScored(r.Scores, i, w.Time, w.Rate, w.Gate, w.Tilt, w.RhythmPeriod).IsWalking;
+                bool now = c.ClassifyScored(r.Outputs, i, w.Time, w.Rate, w.Gate, w.Tilt, w.RhythmPeriod).IsWalking;
                 if (now) walking++;
                 if (now && !was) walks++;
                 was = now;
