@@ -93,7 +93,7 @@ namespace HeadGait.Cli
                 WearerProfile self = null;
                 try
                 {
-                    self = WearerAdaptation.Fit(models, sure, "style", WearerProfile.SelfSupervised, selfSettings);
+                    self = WearerAdaptation.Fit(models, sure, "style", WearerProfile.SelfSupervised, selfSettings, selfSettings.StillCheck ? session.Head : null);
                 }
                 catch (InvalidOperationException e)
                 {
@@ -209,6 +209,7 @@ namespace HeadGait.Cli
                     else if (key.StartsWith("template-steps=", StringComparison.Ordinal)) a.CorTemplateSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(15)));
                     else if (key.StartsWith("fill-below=", StringComparison.Ordinal)) a.FillMissedBelowSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(11)));
                     else if (key.StartsWith("own-templates=", StringComparison.Ordinal)) a.CorOwnTemplates = (int)Math.Min(16, Number(key.Substring(14)));
+                    else if (key.StartsWith("still-slack=", StringComparison.Ordinal)) a.StillSlack = Number(key.Substring(12));
                     else if (key.StartsWith("short-margin=", StringComparison.Ordinal)) a.ShortWalkMargin = Number(key.Substring(13));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else
@@ -226,7 +227,8 @@ namespace HeadGait.Cli
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
                             case "cor-fuller": a.PreferFullerCorRefit = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, cor-fuller, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
+                            case "still-check": a.StillCheck = on; break;
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -240,7 +242,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>

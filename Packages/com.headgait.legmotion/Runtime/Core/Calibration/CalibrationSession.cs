@@ -44,7 +44,7 @@ namespace HeadGait.Calibration
             if (HasFootReferences && !selfSupervised) return WearerAdaptation.Fit(models, new[] { Labelled() }, wearer, WearerProfile.FromFootReferences, settings);
             var a = settings ?? AdaptationSettings.For(WearerProfile.SelfSupervised);
             var sure = WearerAdaptation.SelfLabel(models, Head, a.LabelWithGateOpen, a.FillMissedSteps, a.FillMissedBelowSteps);
-            return WearerAdaptation.Fit(models, sure, wearer, WearerProfile.SelfSupervised, a);
+            return WearerAdaptation.Fit(models, sure, wearer, WearerProfile.SelfSupervised, a, a.StillCheck ? Head : null);
         }
 
         /// <summary>

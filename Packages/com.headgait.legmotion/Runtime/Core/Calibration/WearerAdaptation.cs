@@ -117,6 +117,15 @@ namespace HeadGait.Calibration
         /// *masculine* worse than uncalibrated (up to +2.3 points). Self-supervised: 1 (two cost bn *feminine* 19.7 to 25.0 %).
         /// </summary>
         public int CorOwnTemplates = 2;
+        /// <summary>
+        /// Self-supervised: a COR candidate is kept only where, replayed over the whole calibration walk, it shows no more
+        /// time as walking outside the walk's own step rhythm (<see cref="RhythmReference"/>) than the trained COR
+        /// (<see cref="WearerAdaptation.OutsideRhythmWalking"/>): the sure stretches it is scored on hold only walking, so
+        /// nothing else tells a wearer's own step that also matches their pauses and turns on the spot.
+        /// </summary>
+        public bool StillCheck = true;
+        /// <summary>With <see cref="StillCheck"/>, seconds of walking outside the rhythm a candidate may add over the trained COR.</summary>
+        public double StillSlack;
     }
 
     /// <summary>
@@ -153,7 +162,7 @@ namespace HeadGait.Calibration
         /// <see cref="InvalidOperationException"/> when the walk holds fewer than <see cref="MinSteps"/> steps or the models
         /// lack THR or COR.
         /// </summary>
-        public static WearerProfile Fit(GaitModels models, IReadOnlyList<Recording> walk, string wearer, string source = WearerProfile.FromFootReferences, AdaptationSettings settings = null)
+        public static WearerProfile Fit(GaitModels models, IReadOnlyList<Recording> walk, string wearer, string source = WearerProfile.FromFootReferences, AdaptationSettings settings = null, Recording unlabelled = null)
         {
             var a = settings ?? AdaptationSettings.For(source);
             if (models?.Correlation == null || models.Threshold == null) throw new InvalidOperationException("Calibration needs the trained THR settings and COR template.");
@@ -184,7 +193,7 @@ namespace HeadGait.Calibration
             var shippedCor = baseCor.With(gate: corGate);
             var shippedThr = baseThr.Clone();
             shippedThr.Gate = thrGate;
-            var cor = ChooseCor(shippedCor, corCandidates, walk, a, steps);
+            var cor = ChooseCor(shippedCor, corCandidates, walk, a, steps, unlabelled);
             if (!Pays(() => new ThresholdClassifier(thr), () => new ThresholdClassifier(shippedThr), walk, a.AcceptMargin)) thr = shippedThr;
 
             var learnedGate = LearnedGate(models);
@@ -271,8 +280,14 @@ namespace HeadGait.Calibration
         /// do, the most refitted (<see cref="AdaptationSettings.PreferFullerCorRefit"/>) or the best scoring. NaN margin: the
         /// most refitted, paying or not.
         /// </summary>
-        static CorrelationTemplate ChooseCor(CorrelationTemplate shipped, List<CorrelationTemplate> candidates, IReadOnlyList<Recording> walk, AdaptationSettings a, int steps)
+        static CorrelationTemplate ChooseCor(CorrelationTemplate shipped, List<CorrelationTemplate> candidates, IReadOnlyList<Recording> walk, AdaptationSettings a, int steps, Recording unlabelled)
         {
+            if (unlabelled != null && candidates.Count > 0)
+            {
+                var reference = RhythmReference.Of(unlabelled);
+                double trainedOutside = OutsideRhythmWalking(new CorrelationClassifier(shipped), unlabelled, reference);
+                candidates = candidates.FindAll(c => OutsideRhythmWalking(new CorrelationClassifier(c), unlabelled, reference) <= trainedOutside + a.StillSlack);
+            }
             if (candidates.Count == 0) return shipped;
             if (double.IsNaN(a.AcceptMargin)) return candidates[candidates.Count - 1];
             double margin = steps < a.CorThresholdSteps && !double.IsNaN(a.ShortWalkMargin) ? Math.Max(a.AcceptMargin, a.ShortWalkMargin) : a.AcceptMargin;
@@ -289,6 +304,30 @@ namespace HeadGait.Calibration
                 chosen = candidate;
             }
             return chosen;
+        }
+
+        /// <summary>Time around each walking bout of the rhythm that <see cref="OutsideRhythmWalking"/> leaves out (s): a first or last step the rhythm does not count.</summary>
+        public const double BoutEdge = 1.0;
+
+        /// <summary>
+        /// Seconds of <paramref name="recording"/> the classifier predicts as walking farther than <see cref="BoutEdge"/> from
+        /// every walking bout of its step rhythm (<paramref name="reference"/>): on a calibration walk, its pauses, turns on
+        /// the spot and stop.
+        /// </summary>
+        public static double OutsideRhythmWalking(IGaitClassifier classifier, Recording recording, RhythmReference reference)
+        {
+            var predictions = ReplayEvaluator.Run(recording, classifier, keepTrace: true).Predictions;
+            double seconds = 0;
+            for (int i = 0; i + 1 < predictions.Count; i++)
+            {
+                if (!predictions[i].IsWalking) continue;
+                double t = predictions[i].Time;
+                bool nearBout = false;
+                foreach (var b in reference.Bouts)
+                    if (t >= b.Start - BoutEdge && t <= b.End + BoutEdge) { nearBout = true; break; }
+                if (!nearBout) seconds += Math.Min(0.1, Math.Max(0, predictions[i + 1].Time - t));
+            }
+            return seconds;
         }
 
         /// <summary>
