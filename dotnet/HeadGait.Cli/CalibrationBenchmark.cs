@@ -183,7 +183,7 @@ namespace HeadGait.Cli
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
         /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels,
-        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a gate opens);
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a detector's gate opens), learned-gate-cap=LOGODDS (most the learned models' gate opens);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -204,6 +204,7 @@ namespace HeadGait.Cli
                     if (key.StartsWith("prior=", StringComparison.Ordinal)) a.ThresholdPriorSteps = Number(key.Substring(6));
                     else if (key.StartsWith("margin=", StringComparison.Ordinal)) a.AcceptMargin = Number(key.Substring(7));
                     else if (key.StartsWith("gate-cap=", StringComparison.Ordinal)) a.MaxGateShift = Number(key.Substring(9));
+                    else if (key.StartsWith("learned-gate-cap=", StringComparison.Ordinal)) a.MaxLearnedGateShift = Number(key.Substring(17));
                     else if (key.StartsWith("shift-cap=", StringComparison.Ordinal)) a.LearnedShiftCap = Number(key.Substring(10));
                     else if (key.StartsWith("shift-prior=", StringComparison.Ordinal)) a.LearnedShiftPrior = Number(key.Substring(12));
                     else if (key.StartsWith("template-steps=", StringComparison.Ordinal)) a.CorTemplateSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(15)));
@@ -228,7 +229,7 @@ namespace HeadGait.Cli
                             case "fill-missed": a.FillMissedSteps = on; break;
                             case "cor-fuller": a.PreferFullerCorRefit = on; break;
                             case "still-check": a.StillCheck = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -241,7 +242,7 @@ namespace HeadGait.Cli
         internal static string Describe(AdaptationSettings a) => string.Join(" ", new[]
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
-            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##})" : null,
+            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
             a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 

@@ -148,6 +148,29 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void ALearnedGateOpensFurtherThanADetectorsForAWalkThatNeedsIt()
+        {
+            // The shipped learned gate set so that the generated wearer's walk needs it opened by 1.5 log-odds: more than a
+            // detector's gate may open (1) but within the learned models' bound; a profile holding it reads back.
+            var walk = new[] { Walk(Wearer()) };
+            var gate = WalkingGate.Parse(Shipped.Svm.Values[WalkingGate.ModelKey]);
+            double unbounded = WearerAdaptation.GateShift(gate, walk, WalkingGate.LearnedPass, 100);
+            var closed = WearerProfile.OpenGate(gate, unbounded - 1.5);
+            double needed = WearerAdaptation.GateShift(closed, walk, WalkingGate.LearnedPass, WearerProfile.MaxLearnedGateShift);
+            Assert.That(needed, Is.GreaterThan(WearerProfile.MaxGateShift).And.LessThanOrEqualTo(WearerProfile.MaxLearnedGateShift));
+            Assert.That(needed, Is.EqualTo(1.5).Within(1e-9));
+            Assert.That(WearerAdaptation.GateShift(closed, walk, WalkingGate.DetectorPass, WearerProfile.MaxGateShift), Is.LessThanOrEqualTo(WearerProfile.MaxGateShift));
+
+            var (left, right) = SyntheticAnkles.From(walk[0], 72, 3);
+            var profile = new CalibrationSession(Unlabelled(walk[0]), left, right).Fit(Shipped, "calm-wearer");
+            profile.LearnedGateShift = needed;
+            var back = WearerProfile.Parse(profile.Serialize(), "wide.profile.txt");
+            Assert.That(back.LearnedGateShift, Is.EqualTo(needed));
+            var e = Assert.Throws<FormatException>(() => WearerProfile.Parse(profile.Serialize().Replace("learned_gate_shift=" + needed.ToString("R", System.Globalization.CultureInfo.InvariantCulture), "learned_gate_shift=2.5"), "wide.profile.txt"));
+            Assert.That(e.Message, Does.Contain("wide.profile.txt").And.Contain("learned_gate_shift"));
+        }
+
+        [Test]
         public void AProfileRoundTripsAndDamageIsRefusedNamingTheFile()
         {
             var walk = Walk(Wearer());

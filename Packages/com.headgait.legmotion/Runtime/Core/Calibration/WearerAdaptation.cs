@@ -41,6 +41,8 @@ namespace HeadGait.Calibration
         public bool LearnedGate = true;
         /// <summary>Most a calibration opens a walking gate (log-odds; at most <see cref="WearerProfile.MaxGateShift"/>).</summary>
         public double MaxGateShift = WearerProfile.MaxGateShift;
+        /// <summary>Most a calibration opens the learned models' walking gate (at most <see cref="WearerProfile.MaxLearnedGateShift"/>).</summary>
+        public double MaxLearnedGateShift = WearerProfile.MaxLearnedGateShift;
         /// <summary>
         /// Keep each refitted part only where it scores the calibration walk itself better than the trained one by at least
         /// this much misclassification (0.01 = a point); NaN keeps every part.
@@ -135,7 +137,7 @@ namespace HeadGait.Calibration
     /// floor, lag, sideways profile and clock lead (recalibrated starting from the trained settings), how far the learned
     /// models' walking gate must open to pass the wearer's walking, and their input gain. The walk is labelled either from
     /// two ankle trackers (<see cref="FootContactLabeller"/>) or by the shipped COR itself (<see cref="SelfLabel"/>).
-    /// Bounded so that it cannot make standing walk: a gate opens by at most <see cref="WearerProfile.MaxGateShift"/>, COR's
+    /// Bounded so that it cannot make standing walk: a detector's gate opens by at most <see cref="WearerProfile.MaxGateShift"/>, the learned models' by <see cref="WearerProfile.MaxLearnedGateShift"/>, COR's
     /// threshold drops by at most <see cref="MaxThresholdDrop"/> (none), THR's floor to no less than
     /// <see cref="MinFloorShare"/> of the trained one.
     /// </summary>
@@ -174,10 +176,10 @@ namespace HeadGait.Calibration
             var baseThr = models.Threshold;
 
             bool ownStep = a.CorTemplate && steps >= a.CorTemplateSteps;
-            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseCor.Gate;
+            var corGate = a.DetectorGates ? WearerProfile.OpenGate(baseCor.Gate, GateShift(baseCor.Gate, walk, WalkingGate.DetectorPass, Math.Min(a.MaxGateShift, WearerProfile.MaxGateShift))) : baseCor.Gate;
             bool refitThreshold = a.CorThreshold || steps >= a.CorThresholdSteps, refitLead = a.CorLead || steps >= a.CorThresholdSteps;
             var corCandidates = CorCandidates(baseCor, corGate, training, ownStep, refitThreshold, refitLead, steps >= a.CorThresholdSteps ? Math.Max(1, a.CorOwnTemplates) : 1);
-            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass, a.MaxGateShift)) : baseThr.Gate;
+            var thrGate = a.DetectorGates ? WearerProfile.OpenGate(baseThr.Gate, GateShift(baseThr.Gate, walk, WalkingGate.DetectorPass, Math.Min(a.MaxGateShift, WearerProfile.MaxGateShift))) : baseThr.Gate;
             var thr = baseThr.Clone();
             thr.Gate = thrGate;
             if (a.Threshold)
@@ -205,7 +207,7 @@ namespace HeadGait.Calibration
                 BaseModels = WearerProfile.Fingerprint(models),
                 Threshold = thr,
                 Correlation = cor,
-                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass, a.MaxGateShift),
+                LearnedGateShift = learnedGate == null || !a.LearnedGate ? 0 : GateShift(learnedGate, walk, WalkingGate.LearnedPass, Math.Min(a.MaxLearnedGateShift, WearerProfile.MaxLearnedGateShift)),
                 LearnedGain = a.LearnedGain ? LearnedGain(baseCor.LeadReferenceBounce, walk) : 1,
             };
             // The learned models' scaling too only where it pays on the walk (the SVM's and the BLSTM's scores together).
@@ -386,7 +388,7 @@ namespace HeadGait.Calibration
 
         /// <summary>
         /// Log-odds to add to <paramref name="gate"/> so that <paramref name="pass"/> of the walk's walking windows pass, as
-        /// training set it for the training walkers (0 when they already do; at most <see cref="WearerProfile.MaxGateShift"/>).
+        /// training set it for the training walkers (0 when they already do; at most <paramref name="most"/>).
         /// </summary>
         public static double GateShift(WalkingGate gate, IReadOnlyList<Recording> walk, double pass, double most = WearerProfile.MaxGateShift)
         {
@@ -405,7 +407,7 @@ namespace HeadGait.Calibration
             if (scores.Count < 50) return 0;
             scores.Sort();
             double q = scores[(int)Math.Floor((1 - pass) * (scores.Count - 1))];
-            return Math.Max(0, Math.Min(Math.Min(most, WearerProfile.MaxGateShift), -q));
+            return Math.Max(0, Math.Min(most, -q));
         }
 
         /// <summary>
