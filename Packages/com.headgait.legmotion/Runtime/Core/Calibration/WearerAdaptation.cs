@@ -324,10 +324,7 @@ namespace HeadGait.Calibration
             {
                 if (!predictions[i].IsWalking) continue;
                 double t = predictions[i].Time;
-                bool nearBout = false;
-                foreach (var b in reference.Bouts)
-                    if (t >= b.Start - BoutEdge && t <= b.End + BoutEdge) { nearBout = true; break; }
-                if (!nearBout) seconds += Math.Min(0.1, Math.Max(0, predictions[i + 1].Time - t));
+                if (!reference.IsNear(t, BoutEdge)) seconds += Math.Min(0.1, Math.Max(0, predictions[i + 1].Time - t));
             }
             return seconds;
         }

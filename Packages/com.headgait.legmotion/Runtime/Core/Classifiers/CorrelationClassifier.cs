@@ -326,7 +326,7 @@ namespace HeadGait
                 int t = recentTemplate[centre];
                 double contact = recentTime[centre] - template.Templates[t].ContactLag;
                 double since = contact - clock.LastContactTime;
-                // A walk not shown yet (StepClockSettings.StillStartContacts, TiltMoveStartContacts) is confirmed only by a full match.
+                // A walk not shown yet (StepClock.Hidden) is confirmed only by a full match.
                 bool due = clock.IsWalking(now) && !clock.Hidden(now) && since >= settings.DueFrom * clock.StepPeriod && since <= settings.DueUntil * clock.StepPeriod;
                 bool peak = r >= (due ? minCorrelation - settings.TrackingMargin : minCorrelation) && recentSpan[centre] >= settings.MinStepSpan;
                 for (int i = 0; peak && i < recentR.Length; i++)

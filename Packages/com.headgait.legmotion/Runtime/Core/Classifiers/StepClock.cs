@@ -358,8 +358,11 @@ namespace HeadGait
             bool readsStill = settings.StillStartMaxBend > 0;
             if (readsStill || settings.MaxStartTiltChange > 0 || settings.MaxWalkingTiltChange > 0 || settings.TiltMoveStartContacts > 1) tilt.Follow(window, readsStill);
             if (tilt.Change > HeadTilt.MoveStartChange) tiltMoved = window.EndTime;
-            if (readsStill) FollowStill(window.EndTime);
-            if (readsStill) still.FollowBend(tilt.Reading, window.EndTime);
+            if (readsStill)
+            {
+                FollowStill(window.EndTime);
+                still.FollowBend(tilt.Reading, window.EndTime);
+            }
             if (rhythmCountdown-- > 0) return;
             rhythmCountdown = StepClockSettings.RhythmEveryWindows - 1;
             var rhythm = StepRhythm.Of(window, levelTolerance);
@@ -518,9 +521,9 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// Whether the walk under way is not shown yet: it started from a still head or soon after the head's tilt moved, and
-        /// waits for more contacts (<see cref="StepClockSettings.StillStartContacts"/>, <see cref="StepClockSettings.TiltMoveStartContacts"/>);
-        /// the clock walks meanwhile.
+        /// Whether the walk under way is not shown yet: it started from a still head, soon after the head's tilt moved or soon
+        /// after it bent from a still head, and waits for more contacts (<see cref="StepClockSettings.StillStartContacts"/>,
+        /// <see cref="StepClockSettings.TiltMoveStartContacts"/>, <see cref="StepClockSettings.BendStartContacts"/>); the clock walks meanwhile.
         /// </summary>
         public bool Hidden(double now) => hiddenContacts > 0 && IsWalking(now);
 

@@ -82,6 +82,14 @@ namespace HeadGait
             return false;
         }
 
+        /// <summary>Whether <paramref name="time"/> lies within <paramref name="edge"/> seconds of a walking bout (inside one included).</summary>
+        public bool IsNear(double time, double edge)
+        {
+            foreach (var b in bouts)
+                if (time >= b.Start - edge && time <= b.End + edge) return true;
+            return false;
+        }
+
         /// <summary>The step period (s) the signal shows nearest <paramref name="time"/> inside its bout; 0 outside walking.</summary>
         public double StepPeriod(double time)
         {

@@ -342,6 +342,9 @@ namespace HeadGait
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;
 
+        /// <summary>Whether the walk going on is younger than <see cref="HeadTilt.YoungWalk"/>.</summary>
+        bool IsYoung(double now) => WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
+
         /// <summary>From the window's outputs (in <see cref="outputs"/>) to its prediction.</summary>
         GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod)
         {
@@ -358,7 +361,7 @@ namespace HeadGait
             // the refusals still count, so one the rhythm no longer holds ends the walk at once.
             bool heldByRhythm = gate == GateVerdict.RefusesInStepRhythm && filter != null && filter.Settings.HoldOnRhythm && WasWalking;
             bool ridden = refused && !heldByRhythm && filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
-            bool young = WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
+            bool young = IsYoung(now);
             ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate, young);
             if (wearer) ApplyGate(wearerProbabilities, refused && !heldByRhythm, ridden, gate, young);
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
@@ -492,7 +495,7 @@ namespace HeadGait
         bool Bending(double tiltChange, double now)
         {
             if (filter == null) return false;
-            bool young = WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
+            bool young = IsYoung(now);
             double limit = WasWalking && !young ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
             return limit > 0 && tiltChange > limit;
         }
