@@ -122,7 +122,7 @@ namespace HeadGait.Calibration
         /// <summary>
         /// Self-supervised: a COR candidate, and the learned models' input gain, is kept only where, replayed over the whole
         /// calibration walk, it shows no more time as walking outside the walk's own step rhythm (<see cref="RhythmReference"/>)
-        /// than the trained classifier (<see cref="WearerAdaptation.StillCheck"/>): the sure stretches it is scored on hold
+        /// than the trained classifier (<see cref="WearerAdaptation.OutsideRhythmWalking"/>): the sure stretches it is scored on hold
         /// only walking, so nothing else tells a wearer's own step, or a calm wearer's larger gain, that also shows their
         /// pauses and turns on the spot as walking.
         /// </summary>
