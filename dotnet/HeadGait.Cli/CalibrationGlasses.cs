@@ -28,6 +28,8 @@ namespace HeadGait.Cli
             var walking = new Dictionary<(string clf, int v), List<RealWorldScore>>();
             var still = new Dictionary<(string clf, int v, string activity), List<RealWorldScore>>();
             var notes = new List<string>();
+            // classifier -> activity -> (people whose avatar shows that activity as walking longer after calibration, people scored)
+            var rises = new Dictionary<(string clf, string activity), (List<string> risen, int people)>();
             foreach (var person in people)
             {
                 var walk = person.FirstOrDefault(r => RealActivity.Of(r) == RealActivity.Walking);
@@ -41,6 +43,7 @@ namespace HeadGait.Cli
                     continue;
                 }
                 WearerProfile profile;
+                var clock = System.Diagnostics.Stopwatch.StartNew();
                 try
                 {
                     profile = new CalibrationSession(first).Fit(shipped, Safe(person.Key), selfSupervised: true, settings);
@@ -50,11 +53,14 @@ namespace HeadGait.Cli
                     notes.Add($"{person.Key}: not calibrated ({e.Message}); {ContactRhythm(shipped, first)}");
                     continue;
                 }
+                double fitSeconds = clock.Elapsed.TotalSeconds;
                 var adapted = profile.Apply(shipped);
                 var scored = new List<Recording> { rest };
                 scored.AddRange(person.Where(r => RealActivity.IsStill(RealActivity.Of(r))));
                 var references = scored.Select(RhythmReference.Of).ToList();
                 foreach (var clf in names)
+                {
+                    var avatarStill = new Dictionary<string, double[]>();
                     for (int v = 0; v < 2; v++)
                     {
                         var models = v == 0 ? shipped : adapted;
@@ -66,11 +72,24 @@ namespace HeadGait.Cli
                             scores[i] = RealWorldScore.Of(scored[i], references[i], c.Name, result.Predictions, result.Frames);
                         });
                         Add(walking, (clf, v), scores[0]);
-                        for (int i = 1; i < scores.Length; i++) Add(still, (clf, v, scores[i].Activity), scores[i]);
+                        for (int i = 1; i < scores.Length; i++)
+                        {
+                            Add(still, (clf, v, scores[i].Activity), scores[i]);
+                            if (!avatarStill.TryGetValue(scores[i].Activity, out var sec)) avatarStill[scores[i].Activity] = sec = new double[2];
+                            sec[v] += scores[i].AvatarWalkingSeconds;
+                        }
                     }
-                Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-10} {1} sure steps of {2:F0} s; COR {3}, THR {4}, learned gain {5:F2}", person.Key, profile.Steps, first.Duration,
+                    foreach (var kv in avatarStill)
+                    {
+                        rises.TryGetValue((clf, kv.Key), out var r);
+                        r.risen ??= new List<string>();
+                        if (kv.Value[1] > kv.Value[0] + 1e-9) r.risen.Add(string.Format(CultureInfo.InvariantCulture, "{0} {1:F1}->{2:F1} s", person.Key, kv.Value[0], kv.Value[1]));
+                        rises[(clf, kv.Key)] = (r.risen, r.people + 1);
+                    }
+                }
+                Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-10} {1} sure steps of {2:F0} s; COR {3}, THR {4}, learned gain {5:F2}; fitted in {6:F1} s", person.Key, profile.Steps, first.Duration,
                     profile.Correlation.Templates.Count > shipped.Correlation.Templates.Count ? "own step added" : "as shipped",
-                    profile.Threshold.Serialize() == shipped.Threshold.Serialize() ? "as shipped" : "refitted", profile.LearnedGain));
+                    profile.Threshold.Serialize() == shipped.Threshold.Serialize() ? "as shipped" : "refitted", profile.LearnedGain, fitSeconds));
             }
             Console.WriteLine();
             Console.WriteLine("Share of the rest of the walk (where the signal shows steps) shown as walking by the classifier / the avatar; still activities' time shown as walking (classifier / avatar):");
@@ -94,6 +113,12 @@ namespace HeadGait.Cli
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-7} {1,18} {2,18} {3,6:+0.0;-0.0} {4}", clf, Share(0), Share(1), Clf(1) - Clf(0),
                     string.Join(" ", new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup }.Select(Still))));
             }
+            Console.WriteLine();
+            Console.WriteLine("People whose still activity the avatar shows as walking longer with their profile than without (time none->self):");
+            foreach (var clf in names)
+                foreach (var activity in new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup })
+                    if (rises.TryGetValue((clf, activity), out var r))
+                        Console.WriteLine($"{clf,-7} {activity,-22} {r.risen.Count} of {r.people}" + (r.risen.Count > 0 ? ": " + string.Join(", ", r.risen) : ""));
             foreach (var n in notes) Console.WriteLine("note: " + n);
             return 0;
         }

@@ -120,13 +120,14 @@ namespace HeadGait.Calibration
         /// </summary>
         public int CorOwnTemplates = 2;
         /// <summary>
-        /// Self-supervised: a COR candidate is kept only where, replayed over the whole calibration walk, it shows no more
-        /// time as walking outside the walk's own step rhythm (<see cref="RhythmReference"/>) than the trained COR
-        /// (<see cref="WearerAdaptation.OutsideRhythmWalking"/>): the sure stretches it is scored on hold only walking, so
-        /// nothing else tells a wearer's own step that also matches their pauses and turns on the spot.
+        /// Self-supervised: a COR candidate, and the learned models' input gain, is kept only where, replayed over the whole
+        /// calibration walk, it shows no more time as walking outside the walk's own step rhythm (<see cref="RhythmReference"/>)
+        /// than the trained classifier (<see cref="WearerAdaptation.OutsideRhythmWalking"/>): the sure stretches it is scored on hold
+        /// only walking, so nothing else tells a wearer's own step, or a calm wearer's larger gain, that also shows their
+        /// pauses and turns on the spot as walking.
         /// </summary>
         public bool StillCheck = true;
-        /// <summary>With <see cref="StillCheck"/>, seconds of walking outside the rhythm a candidate may add over the trained COR.</summary>
+        /// <summary>With <see cref="StillCheck"/>, seconds of walking outside the rhythm a candidate may add over the trained classifier.</summary>
         public double StillSlack;
     }
 
@@ -195,7 +196,8 @@ namespace HeadGait.Calibration
             var shippedCor = baseCor.With(gate: corGate);
             var shippedThr = baseThr.Clone();
             shippedThr.Gate = thrGate;
-            var cor = ChooseCor(shippedCor, corCandidates, walk, a, steps, unlabelled);
+            var still = unlabelled == null ? null : new StillCheck(unlabelled, a.StillSlack);
+            var cor = ChooseCor(shippedCor, corCandidates, walk, a, steps, still);
             if (!Pays(() => new ThresholdClassifier(thr), () => new ThresholdClassifier(shippedThr), walk, a.AcceptMargin)) thr = shippedThr;
 
             var learnedGate = LearnedGate(models);
@@ -220,7 +222,7 @@ namespace HeadGait.Calibration
                 {
                     LearnedClassifier Make(ModelFile f) => isSvm ? (LearnedClassifier)new SvmClassifier(f, SvmClassifier.DefaultFilter()) : new BlstmClassifier(f, new PhaseFilterSettings());
                     var scaled = profile.ScaledModel(learned);
-                    if (!Pays(() => Make(scaled), () => Make(learned), walk, a.AcceptMargin))
+                    if (!Pays(() => Make(scaled), () => Make(learned), walk, a.AcceptMargin) || !LearnedScalingStill(profile, models, still))
                     {
                         profile.LearnedGain = 1;
                         profile.LearnedGateShift = 0;
@@ -282,13 +284,12 @@ namespace HeadGait.Calibration
         /// do, the most refitted (<see cref="AdaptationSettings.PreferFullerCorRefit"/>) or the best scoring. NaN margin: the
         /// most refitted, paying or not.
         /// </summary>
-        static CorrelationTemplate ChooseCor(CorrelationTemplate shipped, List<CorrelationTemplate> candidates, IReadOnlyList<Recording> walk, AdaptationSettings a, int steps, Recording unlabelled)
+        static CorrelationTemplate ChooseCor(CorrelationTemplate shipped, List<CorrelationTemplate> candidates, IReadOnlyList<Recording> walk, AdaptationSettings a, int steps, StillCheck still)
         {
-            if (unlabelled != null && candidates.Count > 0)
+            if (still != null && candidates.Count > 0)
             {
-                var reference = RhythmReference.Of(unlabelled);
-                double trainedOutside = OutsideRhythmWalking(new CorrelationClassifier(shipped), unlabelled, reference);
-                candidates = candidates.FindAll(c => OutsideRhythmWalking(new CorrelationClassifier(c), unlabelled, reference) <= trainedOutside + a.StillSlack);
+                double trainedOutside = still.Outside(new CorrelationClassifier(shipped));
+                candidates = candidates.FindAll(c => still.Keeps(new CorrelationClassifier(c), trainedOutside));
             }
             if (candidates.Count == 0) return shipped;
             if (double.IsNaN(a.AcceptMargin)) return candidates[candidates.Count - 1];
@@ -306,6 +307,46 @@ namespace HeadGait.Calibration
                 chosen = candidate;
             }
             return chosen;
+        }
+
+        /// <summary>
+        /// Whether the profile's learned input gain and gate (<see cref="WearerProfile.ScaledModel"/>) pass the still check
+        /// for each learned model shipped (the SVM and the BLSTM read the same gain): true without a check.
+        /// </summary>
+        static bool LearnedScalingStill(WearerProfile profile, GaitModels models, StillCheck still)
+        {
+            if (still == null) return true;
+            if (models.Svm != null && !still.Keeps(f => new SvmClassifier(f, SvmClassifier.DefaultFilter()), models.Svm, profile.ScaledModel(models.Svm))) return false;
+            if (models.Blstm != null && !still.Keeps(f => new BlstmClassifier(f, new PhaseFilterSettings()), models.Blstm, profile.ScaledModel(models.Blstm))) return false;
+            return true;
+        }
+
+        /// <summary>
+        /// The self-supervised still check (<see cref="AdaptationSettings.StillCheck"/>), one rule for every classifier: a
+        /// refitted classifier is kept only where it shows at most <see cref="AdaptationSettings.StillSlack"/> seconds more
+        /// walking outside the calibration walk's own rhythm (<see cref="OutsideRhythmWalking"/>) than the trained one.
+        /// </summary>
+        sealed class StillCheck
+        {
+            readonly Recording walk;
+            readonly RhythmReference reference;
+            readonly double slack;
+
+            public StillCheck(Recording unlabelled, double slack)
+            {
+                walk = unlabelled;
+                reference = RhythmReference.Of(unlabelled);
+                this.slack = slack;
+            }
+
+            /// <summary>The classifier's walking outside the walk's rhythm (s).</summary>
+            public double Outside(IGaitClassifier classifier) => OutsideRhythmWalking(classifier, walk, reference);
+
+            /// <summary>Whether <paramref name="candidate"/> passes against the trained classifier's <see cref="Outside"/>.</summary>
+            public bool Keeps(IGaitClassifier candidate, double trainedOutside) => Outside(candidate) <= trainedOutside + slack;
+
+            /// <summary>Whether the learned model <paramref name="adapted"/> passes against <paramref name="trained"/>, both built by <paramref name="make"/>.</summary>
+            public bool Keeps(Func<ModelFile, LearnedClassifier> make, ModelFile trained, ModelFile adapted) => Keeps(make(adapted), Outside(make(trained)));
         }
 
         /// <summary>Time around each walking bout of the rhythm that <see cref="OutsideRhythmWalking"/> leaves out (s): a first or last step the rhythm does not count.</summary>
