@@ -111,7 +111,7 @@ namespace HeadGait
         /// from its second (<see cref="StepClockSettings.StillStartContacts"/>, <see cref="StepClockSettings.TiltMoveStartContacts"/>,
         /// <see cref="StepClockSettings.BendStartContacts"/>).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, TiltMoveStartContacts = 3, BendStartContacts = 2 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsStepPeriod = 0.7 };
     }
 
     /// <summary>
@@ -279,9 +279,9 @@ namespace HeadGait
             bool moving = template.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;
-            if (stillWindows == settings.Clock.StopAfterStillWindows) clock.Stop();
+            if (stillWindows == settings.Clock.StopAfterStillWindowsAfter(double.NaN, clock.StepPeriod)) clock.Stop();
             bool walkingBefore = clock.IsWalking(now);
-            if (settings.Clock.ContactAllowed(moving || firstStep, walkingBefore, stillWindows))
+            if (settings.Clock.ContactAllowed(moving || firstStep, walkingBefore, stillWindows, clock.StepPeriod))
             {
                 int from = 0, to = Math.Min(periods - 1, valid - settings.MinStepSamples);
                 if (clock.IsWalking(now) && to >= 0)
