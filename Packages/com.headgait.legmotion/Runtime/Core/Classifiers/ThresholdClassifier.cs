@@ -62,7 +62,7 @@ namespace HeadGait
         /// over one second at the walkers' own paces (mostly near the typical step). Read over one second, the sway of a
         /// walk 40 % slower matched the profile badly: style CV on the held-out clips made slow (`--slow`), right foot 89.5
         /// to 94.2 % (the second corpus's *giant* 11 to 100 %), misclassification 42.3 to 39.8 %; as recorded 23.78 to
-        /// 23.83 %. Calibrated stretched as well, as recorded cost more (*giant* 20.0 to 21.3 %, *bn fem* 17.9 to 18.5 %)
+        /// 23.83 %. Calibrated stretched as well, as recorded cost more (*giant* 20.0 to 21.3 %, *bn fem* 18.1 to 18.5 %)
         /// and the slow clips gained no more.
         /// </summary>
         public static double ProfileStretch(double stepPeriod)
@@ -97,7 +97,8 @@ namespace HeadGait
         /// 27.0 / 27.4 / 28.0 %, but its step recall fell (the avatar's 96.1 / 95.8 / 94.8 / 94.7 / 94.5 %; file CV, the
         /// classifier's, 96.7 to 94.4 % at 5 ms for 23.2 to 23.0 %): the first contact of each clip, where it starts its
         /// walk, already shows the foot landed in its first walking frame. A walk from a still head after standing is shown
-        /// from its second contact (<see cref="StepClockSettings.StillStartContacts"/>).
+        /// from its second contact (<see cref="StepClockSettings.StillStartContacts"/>). A start takes a gate score that
+        /// passed within 0.3 s (<see cref="StepClockSettings.StartGateScoreWithin"/>; 0.6 s scored the same).
         /// </summary>
         public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35, StillStartContacts = 2, StartGateScoreWithin = 0.3 };
 
