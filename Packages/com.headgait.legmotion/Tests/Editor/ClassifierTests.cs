@@ -771,6 +771,39 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void ASlowerWalkRidesOutTheGateForLonger()
+        {
+            // A slow walker's head lies still between steps for longer: the gate-refusal counts stretch with the step period
+            // beyond StillWindowsStepPeriod (THR: the typical step), and hold at the typical step or faster; COR's hold at any pace.
+            var thr = new ThresholdSettings().Clock;
+            int established = thr.StopAfterStillWindowsAfter(thr.EstablishedAfter);
+            Assert.That(thr.StopAfterStillWindowsAfter(thr.EstablishedAfter, StepClockSettings.TypicalStepPeriod), Is.EqualTo(established));
+            Assert.That(thr.StopAfterStillWindowsAfter(thr.EstablishedAfter, 0.45), Is.EqualTo(established), "a faster walk as before");
+            Assert.That(thr.StopAfterStillWindowsAfter(thr.EstablishedAfter, 2 * StepClockSettings.TypicalStepPeriod), Is.EqualTo(2 * established));
+            Assert.That(thr.ContactAllowed(false, true, thr.ContactWhileStillWindows + 2, StepClockSettings.TypicalStepPeriod), Is.False);
+            Assert.That(thr.ContactAllowed(false, true, thr.ContactWhileStillWindows + 2, 0.9), Is.True, "a contact of a walk stepping at 0.9 s");
+            Assert.That(thr.ContactAllowed(false, false, 0, 0.9), Is.False, "no walk under way");
+            var cor = new CorrelationSettings().Clock;
+            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, 0.91), Is.EqualTo(cor.StopAfterStillWindows), "COR as before");
+            Assert.That(cor.ContactAllowed(false, true, cor.ContactWhileStillWindows, 0.91), Is.False, "COR as before");
+        }
+
+        [Test]
+        public void StartsASlowCalmWalkAsWellAsItsOwnPace()
+        {
+            // The same walk 40 % slower and calmer (the benchmark's --slow): its gate score dips below walking at each heel
+            // strike, so THR, asking for the score at the crossing alone, never started it (all of its walking shown as
+            // standing); it now takes a score that passed within StepClockSettings.StartGateScoreWithin before.
+            var thr = TestData.CommittedThreshold;
+            var rec = TestData.Eval("walk_straight");
+            var normal = ReplayEvaluator.Run(rec, new ThresholdClassifier(thr)).ClassifierMetrics;
+            var slow = ReplayEvaluator.Run(Training.RecordingAugmentation.Slow(rec), new ThresholdClassifier(thr)).ClassifierMetrics;
+            Assert.That(slow.StepRecall, Is.GreaterThan(normal.StepRecall - 0.05), "steps found");
+            Assert.That(slow.WalkingAsStanding, Is.LessThan(normal.WalkingAsStanding + 0.05), "walking shown as standing");
+            Assert.That(slow.MisclassificationRate, Is.LessThan(normal.MisclassificationRate + 0.05));
+        }
+
+        [Test]
         public void StandingStillIsStanding()
         {
             var rec = WalkingStreamGenerator.Generate("still", GaitSubject.Random(3), new StreamScript().Stand(20), 3);

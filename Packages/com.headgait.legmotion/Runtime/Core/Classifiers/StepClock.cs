@@ -88,6 +88,14 @@ namespace HeadGait
         public bool StartNeedsGateScore = true;
 
         /// <summary>
+        /// Seconds back the walking gate's regression may have scored walking for <see cref="StartNeedsGateScore"/> (0: the
+        /// window itself). A slow, calm walker's gate score dips below 0 at each heel strike (the second it reads holds
+        /// the quiet stretch before it) and is above 0 a step's fraction earlier and later: asked at the crossing alone,
+        /// THR never started a generated walk slowed 40 % and showed the slowest real styles slowed as standing for most of their walk.
+        /// </summary>
+        public double StartGateScoreWithin = 0;
+
+        /// <summary>
         /// A walk in progress stops when the head's tilt moves more than this over the newest <see cref="HeadTilt.Span"/> seconds
         /// (degrees): a walker who bends down to the floor has stopped walking. 0 turns it off.
         /// </summary>
@@ -159,8 +167,11 @@ namespace HeadGait
         /// <summary>A contact further than this from the previous one starts a new walking bout (s).</summary>
         public double MaxStepInterval = 1.0;
 
+        /// <summary>The real training data's median step (s).</summary>
+        public const double TypicalStepPeriod = 0.55;
+
         /// <summary>Step period assumed until two contacts have been seen (s).</summary>
-        public double InitialStepPeriod = 0.55;
+        public double InitialStepPeriod = TypicalStepPeriod;
 
         /// <summary>
         /// Weight of each new interval between contacts in the measured step period (the rest stays with the period so
@@ -205,9 +216,25 @@ namespace HeadGait
         /// <summary>Seconds a walk has been shown before <see cref="EstablishedStopAfterStillWindows"/> applies: the rhythm's span (<see cref="StepRhythm.HistorySamples"/>), as for the pipeline's hold (<see cref="RhythmHoldSettings.EstablishedAfter"/>).</summary>
         public double EstablishedAfter = StepRhythm.HistorySamples / 100.0;
 
-        /// <summary>Gate-refused windows in a row that end a walk shown for <paramref name="walkedFor"/> seconds (NaN: none shown).</summary>
-        public int StopAfterStillWindowsAfter(double walkedFor)
-            => EstablishedStopAfterStillWindows > 0 && walkedFor >= EstablishedAfter ? EstablishedStopAfterStillWindows : StopAfterStillWindows;
+        /// <summary>
+        /// Gate-refused windows in a row that end a walk shown for <paramref name="walkedFor"/> seconds (NaN: none shown)
+        /// stepping at <paramref name="stepPeriod"/> (s; 0: the typical step, <see cref="StillWindowsStepPeriod"/>).
+        /// </summary>
+        public int StopAfterStillWindowsAfter(double walkedFor, double stepPeriod = 0)
+            => ForStep(EstablishedStopAfterStillWindows > 0 && walkedFor >= EstablishedAfter ? EstablishedStopAfterStillWindows : StopAfterStillWindows, stepPeriod);
+
+        /// <summary>
+        /// The step period (s) the gate-refusal counts (<see cref="StopAfterStillWindows"/>, <see cref="EstablishedStopAfterStillWindows"/>,
+        /// <see cref="ContactWhileStillWindows"/>) hold for; a walk stepping slower has them stretched by its period over this
+        /// one, as its head lies still between steps for longer. A calm walker slowed down 40 % had the gate shut for more than
+        /// 0.15 s in a row 240-300 times per style and for more than 0.35 s 20-110 times, so its walks broke off between steps
+        /// and its contacts came too long into a refusal to count. 0 turns it off (the counts hold at any pace).
+        /// </summary>
+        public double StillWindowsStepPeriod = TypicalStepPeriod;
+
+        /// <summary><paramref name="windows"/> stretched for a walk stepping at <paramref name="stepPeriod"/> (<see cref="StillWindowsStepPeriod"/>).</summary>
+        int ForStep(int windows, double stepPeriod)
+            => StillWindowsStepPeriod > 0 && stepPeriod > StillWindowsStepPeriod ? (int)Math.Round(windows * stepPeriod / StillWindowsStepPeriod) : windows;
 
         /// <summary>
         /// While walking, a contact still counts until the walking gate has rejected this many windows in a row. The gate
@@ -217,7 +244,8 @@ namespace HeadGait
         public int ContactWhileStillWindows = 10;
 
         /// <summary>Whether a contact may count now: the gate is open, or the walk goes on and the gate has been shut only briefly.</summary>
-        public bool ContactAllowed(bool gateOpen, bool walking, int stillWindows) => gateOpen || (walking && stillWindows < ContactWhileStillWindows);
+        public bool ContactAllowed(bool gateOpen, bool walking, int stillWindows, double stepPeriod = 0)
+            => gateOpen || (walking && stillWindows < ForStep(ContactWhileStillWindows, stepPeriod));
 
         /// <summary>
         /// Seconds the reported stride position runs ahead of the clock. A contact is only known after it happened, so
@@ -302,6 +330,7 @@ namespace HeadGait
         double firstSeen;             // the first still-head reading's time (StillStartContactsAfterStanding counts from it); NaN before
         int hiddenContacts;           // contacts a walk still needs before it is shown (StillStartContacts, TiltMoveStartContacts, BendStartContacts)
         double tiltMoved;             // when the head's tilt last read a move past HeadTilt.MoveStartChange
+        double lastGateScore;         // when the walking gate's regression last scored walking (StartGateScoreWithin)
 
         public StepClock(PhaseMap map, StepClockSettings settings = null)
         {
@@ -342,6 +371,7 @@ namespace HeadGait
             hiddenContacts = 0;
             firstSeen = double.NaN;
             tiltMoved = double.NegativeInfinity;
+            lastGateScore = double.NegativeInfinity;
         }
 
         /// <summary>The step period (s) the head's rhythm showed at its last reading; 0 when it showed none.</summary>
@@ -396,9 +426,13 @@ namespace HeadGait
         /// progress is not stopped by it.
         /// </summary>
         public bool StartBlocked(double now, double gateLogOdds)
-            => !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange
-                || settings.StartNeedsGateScore && !(gateLogOdds > 0)
+        {
+            // Every window whose score passes gets here (its gate passes), so this is where the last passing score is kept.
+            if (gateLogOdds > 0) lastGateScore = now;
+            return !IsWalking(now) && (settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange
+                || settings.StartNeedsGateScore && !(now - lastGateScore <= settings.StartGateScoreWithin)
                 || still.RefusesStart(tilt.Reading, settings.StillStartMaxBend));
+        }
 
         /// <summary>
         /// Whether a contact now may start a provisional walk although the gate refuses (<see cref="FirstStepStartSettings"/>):
