@@ -182,8 +182,8 @@ namespace HeadGait.Cli
 
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
-        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels,
-        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a detector's gate opens), learned-gate-cap=LOGODDS (most the learned models' gate opens);
+        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search,
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a detector's gate opens), learned-gate-cap=LOGODDS (most the learned models' gate opens), search-cap=SHIFT (most the learned refit's search moves an output shift);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -207,6 +207,7 @@ namespace HeadGait.Cli
                     else if (key.StartsWith("learned-gate-cap=", StringComparison.Ordinal)) a.MaxLearnedGateShift = Number(key.Substring(17));
                     else if (key.StartsWith("shift-cap=", StringComparison.Ordinal)) a.LearnedShiftCap = Number(key.Substring(10));
                     else if (key.StartsWith("shift-prior=", StringComparison.Ordinal)) a.LearnedShiftPrior = Number(key.Substring(12));
+                    else if (key.StartsWith("search-cap=", StringComparison.Ordinal)) a.LearnedSearchCap = Number(key.Substring(11));
                     else if (key.StartsWith("template-steps=", StringComparison.Ordinal)) a.CorTemplateSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(15)));
                     else if (key.StartsWith("fill-below=", StringComparison.Ordinal)) a.FillMissedBelowSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(11)));
                     else if (key.StartsWith("own-templates=", StringComparison.Ordinal)) a.CorOwnTemplates = (int)Math.Min(16, Number(key.Substring(14)));
@@ -225,11 +226,12 @@ namespace HeadGait.Cli
                             case "learned-gain": a.LearnedGain = on; break;
                             case "learned-refit": a.LearnedRefit = on; break;
                             case "learned-channels": a.LearnedChannelGains = on; break;
+                            case "learned-search": a.LearnedShiftSearch = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
                             case "cor-fuller": a.PreferFullerCorRefit = on; break;
                             case "still-check": a.StillCheck = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -243,7 +245,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>

@@ -282,6 +282,25 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void TheSvmsShiftsSearchedOnTheWalkReplayedClassifyTheWearersOtherWalkBetter()
+        {
+            // A calm generated wearer whose stride segments the shipped SVM, with its time filter, shows at the wrong time:
+            // the pair shifts fitted window by window (hinge) take part of it; searched further on the walk replayed through
+            // the whole classifier (a lead of every pair, then pair by pair), they classify the wearer's other walk better.
+            var wearer = Wearer();
+            var walk = Walk(wearer);
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+            var session = new CalibrationSession(Unlabelled(walk), left, right);
+            var searched = session.Fit(models, "calm-wearer");
+            var hinge = WearerAdaptation.Fit(models, new[] { session.Labelled() }, "calm-wearer", WearerProfile.FromFootReferences, new AdaptationSettings { LearnedShiftSearch = false });
+            var other = WalkingStreamGenerator.Generate("other-walk", wearer, new StreamScript().Stand(2).Walk(20, Foot.Right).Stand(1).Walk(20, Foot.Left, -30).Stand(2), 911);
+            double Misclassified(GaitModels m) => ReplayEvaluator.Run(other, m.Create("svm", out _)).ClassifierMetrics.MisclassificationRate;
+            double withSearch = Misclassified(searched.Apply(models)), hingeOnly = Misclassified(hinge.Apply(models)), shippedOnly = Misclassified(models);
+            Assert.That(withSearch, Is.LessThan(hingeOnly), $"searched {withSearch:P1}, hinge fit only {hingeOnly:P1}, shipped {shippedOnly:P1}");
+        }
+
+        [Test]
         public void ADamagedLearnedAdjustmentIsRefusedNamingTheFile()
         {
             var walk = Walk(Wearer());

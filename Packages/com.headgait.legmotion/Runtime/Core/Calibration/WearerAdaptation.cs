@@ -76,6 +76,10 @@ namespace HeadGait.Calibration
         public double LearnedShiftCap = LearnedAdaptation.DefaultShiftCap;
         /// <summary>L2 pull of the refit's output shifts towards none (<see cref="LearnedAdaptation.BiasPrior"/>).</summary>
         public double LearnedShiftPrior = LearnedAdaptation.BiasPrior;
+        /// <summary>Move the refit's output shifts further where the walk replayed through the whole classifier pays (<see cref="LearnedAdaptation"/>'s search).</summary>
+        public bool LearnedShiftSearch = true;
+        /// <summary>Most the search moves an output shift (<see cref="LearnedAdaptation.DefaultSearchCap"/>; at most <see cref="LearnedAdjustment.MaxBiasShift"/>).</summary>
+        public double LearnedSearchCap = LearnedAdaptation.DefaultSearchCap;
         /// <summary>
         /// Self-supervised: read COR's contacts with its walking gate open (<see cref="WearerAdaptation.SelfLabel"/>). The wearer
         /// was asked to walk, so the gate has nothing to decide, and a gate that refuses a calm walker's steps leaves nothing to
@@ -379,7 +383,7 @@ namespace HeadGait.Calibration
         {
             if (shipped == null) return;
             var scaled = profile.ScaledModel(shipped);
-            var adjustment = LearnedAdaptation.Fit(shipped, scaled, make, walk, a.LearnedChannelGains, a.LearnedShiftCap, a.LearnedShiftPrior);
+            var adjustment = LearnedAdaptation.Fit(shipped, scaled, make, walk, a.LearnedChannelGains, a.LearnedShiftCap, a.LearnedShiftPrior, a.LearnedShiftSearch, a.LearnedSearchCap);
             if (adjustment == null || !adjustment.Changes) return;
             string biasName = make(scaled).OutputBiasName;
             var adjusted = adjustment.AppliedTo(scaled, biasName);
@@ -391,7 +395,7 @@ namespace HeadGait.Calibration
             => double.IsNaN(margin) || Misclassification(adapted, walk) <= Misclassification(shipped, walk) - margin;
 
         /// <summary>Pooled misclassification of the walk by fresh classifiers from <paramref name="make"/>.</summary>
-        static double Misclassification(Func<IGaitClassifier> make, IReadOnlyList<Recording> walk)
+        internal static double Misclassification(Func<IGaitClassifier> make, IReadOnlyList<Recording> walk)
         {
             var parts = new List<GaitMetrics>();
             foreach (var r in walk) parts.Add(ReplayEvaluator.Run(r, make()).ClassifierMetrics);

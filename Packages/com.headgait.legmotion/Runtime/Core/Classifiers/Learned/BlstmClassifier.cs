@@ -25,7 +25,6 @@ namespace HeadGait
         readonly Vector<float>[][] bias;      // per direction: [gate vector]
         readonly float[] fcW, fcB;            // [K x 2H], [K]
         readonly double[] logProbabilities;   // [K], LastOutputs
-        readonly double[] wearerShift;        // [K] or null: a wearer's shifts of the class biases (WearerShiftTensor)
         readonly Vector<float>[] gates, cell;
         readonly float[] h, x, joined;
         // Without SIMD lanes (VectorMath.UseVectors): PyTorch's own layout, per direction, and scalar state.
@@ -74,7 +73,6 @@ namespace HeadGait
             fcW = ToFloat(model.Tensor("fc_w", classes, 2 * hidden));
             fcB = ToFloat(model.Tensor("fc_b", classes));
             logProbabilities = new double[classes];
-            wearerShift = ReadWearerShift(model, classes);
             gates = new Vector<float>[gateVectors];
             cell = new Vector<float>[unitVectors];
             h = new float[unitVectors * lanes];
@@ -162,9 +160,10 @@ namespace HeadGait
         /// <summary>The shifted logits' softmax: the probabilities (the outputs, from any evaluator) times e^shift, normalised.</summary>
         protected override bool WearerProbabilities(double[] probabilities, double[] p)
         {
-            if (wearerShift == null) return false;
+            var shift = WearerShift;
+            if (shift == null) return false;
             double sum = 0;
-            for (int k = 0; k < classes; k++) sum += p[k] = probabilities[k] * Math.Exp(wearerShift[k]);
+            for (int k = 0; k < classes; k++) sum += p[k] = probabilities[k] * Math.Exp(shift[k]);
             if (!(sum > 0)) return false;
             for (int k = 0; k < classes; k++) p[k] /= sum;
             return true;

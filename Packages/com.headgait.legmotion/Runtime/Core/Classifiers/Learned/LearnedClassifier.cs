@@ -31,6 +31,7 @@ namespace HeadGait
         readonly PhaseSequenceFilter filter;
         PhaseSequenceFilter wearerFilter;      // over the wearer's probabilities, made on their first window
         readonly double[] wearerProbabilities;
+        double[] wearerShift; // [OutputCount] or null: a wearer's shifts of the output biases (WearerShiftTensor)
         readonly CSharpNetwork network;
         readonly HeadTilt tilt = new HeadTilt();
         bool rhythmHolds;     // whether the head's rhythm held a walk at its last reading (PhaseFilterSettings.HoldOnRhythm)
@@ -90,6 +91,7 @@ namespace HeadGait
             int k = Segments.ClassCount;
             OutputCount = PairwiseOutputs ? k * (k - 1) / 2 : k; // PairwiseOutputs: a constant of the derived class
             outputs = new double[OutputCount];
+            wearerShift = ReadWearerShift(model, OutputCount);
             scores = new double[Segments.ClassCount];
             probabilities = new double[Segments.ClassCount];
             wearerProbabilities = new double[Segments.ClassCount];
@@ -186,13 +188,28 @@ namespace HeadGait
         public const double MaxWearerShift = 3.0;
 
         /// <summary>The model's <see cref="WearerShiftTensor"/> (<paramref name="count"/> values within +-<see cref="MaxWearerShift"/>), or null without one.</summary>
-        protected static double[] ReadWearerShift(ModelFile model, int count)
+        static double[] ReadWearerShift(ModelFile model, int count)
         {
             if (!model.HasTensor(WearerShiftTensor)) return null;
-            var shift = model.Tensor(WearerShiftTensor, count);
+            var shift = (double[])model.Tensor(WearerShiftTensor, count).Clone();
             foreach (var v in shift)
                 if (!(Math.Abs(v) <= MaxWearerShift)) throw new ModelFormatException(model.Source, $"{WearerShiftTensor} holds {v:G4}, outside -{MaxWearerShift}..{MaxWearerShift}");
             return shift;
+        }
+
+        /// <summary>The wearer's output shifts (<see cref="WearerShiftTensor"/>, <see cref="OutputCount"/> values), or null without them.</summary>
+        protected double[] WearerShift => wearerShift;
+
+        /// <summary>
+        /// Decides with other output shifts from now on (null: none), as a model holding them as its
+        /// <see cref="WearerShiftTensor"/> would: the calibration's search tries many on one classifier and its recorded outputs.
+        /// </summary>
+        internal void UseWearerShift(double[] shift)
+        {
+            if (shift != null && shift.Length != OutputCount) throw new ArgumentException($"Expected {OutputCount} shifts, got {shift.Length}.", nameof(shift));
+            foreach (var v in shift ?? Array.Empty<double>())
+                if (!(Math.Abs(v) <= MaxWearerShift)) throw new ArgumentOutOfRangeException(nameof(shift), $"a shift of {v:G4} is outside -{MaxWearerShift}..{MaxWearerShift}");
+            wearerShift = shift == null ? null : (double[])shift.Clone();
         }
 
         /// <summary>

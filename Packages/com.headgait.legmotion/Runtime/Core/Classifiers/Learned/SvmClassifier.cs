@@ -28,7 +28,6 @@ namespace HeadGait
 
         readonly double gamma, coef0;
         readonly double[] intercept;       // [K(K-1)/2]
-        readonly double[] wearerShift;     // [K(K-1)/2] or null: a wearer's shifts of the intercepts (WearerShiftTensor)
         readonly double[] supportVectors;  // [nSV x D], the model's own double values: for pairs too close to call in float32
         readonly double[] dualCoef;        // [(K-1) x nSV]
         readonly int[] start, count;       // each class's support vectors
@@ -84,7 +83,6 @@ namespace HeadGait
             supportVectors = model.Tensor("support_vectors", vectors, width);
             dualCoef = model.Tensor("dual_coef", classes - 1, vectors);
             intercept = model.Tensor("intercept", classes * (classes - 1) / 2);
-            wearerShift = ReadWearerShift(model, intercept.Length);
             int lanes = Vector<float>.Count;
             firstBlock = new int[classes + 1];
             for (int k = 0; k < classes; k++) firstBlock[k + 1] = firstBlock[k] + (count[k] + lanes - 1) / lanes;
@@ -130,8 +128,8 @@ namespace HeadGait
         /// <summary>The votes of the wearer's shifted intercepts (decision value + shift) as probabilities.</summary>
         protected override bool WearerProbabilities(double[] decision, double[] p)
         {
-            if (wearerShift == null) return false;
-            Votes(decision, wearerShift, p);
+            if (WearerShift == null) return false;
+            Votes(decision, WearerShift, p);
             Softmax(p, p);
             return true;
         }
