@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
+using HeadGait.Synthetic;
 using NUnit.Framework;
 
 namespace HeadGait.Tests
@@ -61,6 +62,73 @@ namespace HeadGait.Tests
             Assert.That(first, Is.GreaterThanOrEqualTo(begin + flicker), "a fresh walk shows once it has lasted");
             Assert.That(first, Is.LessThanOrEqualTo(begin + (int)Math.Ceiling(settings.FreshWalkShownAfter * 100) + 5));
             Assert.That(Shown(settings, flicker, 100).Any(w => w), Is.True, "what came before the stream's start is not known: a walk 1 s into it shows at once");
+        }
+
+        /// <summary>
+        /// A model that walks a generated walker's stride (its segments in order, 1.1-s stride) from <see cref="WalkFrom"/>
+        /// on, but stands between <see cref="FlickerFrom"/> and <see cref="FlickerTo"/>: the learned models' belief turning to
+        /// standing early in a walk, before the head's rhythm can hold it.
+        /// </summary>
+        sealed class FlickersEarly : ILearnedEvaluator
+        {
+            readonly LearnedClassifier classifier;
+            public double Time, WalkFrom, WalkTo, FlickerFrom = double.NaN, FlickerTo = double.NaN;
+
+            public FlickersEarly(LearnedClassifier classifier) => this.classifier = classifier;
+
+            public void Evaluate(double[] features, int windows, double[] outputs)
+            {
+                var segments = classifier.Segments;
+                bool walking = Time >= WalkFrom && Time < WalkTo && !(Time >= FlickerFrom && Time < FlickerTo);
+                SureOutputs.Write(classifier, walking ? (int)((Time - WalkFrom) / 1.1 * segments.Count) % segments.Count : segments.StandingClass, outputs);
+            }
+        }
+
+        /// <summary>
+        /// A generated walker stands 8 s, walks 15 s and stands; the model walks with it but stands for 0.3 s 1.2 s after its
+        /// walk is first shown (<see cref="FlickersEarly"/>), before the head's rhythm (2.5 s) could hold it. THR's step clock
+        /// on the model's own walking gate shows the walk by then (from its second contact after the still start, about
+        /// 1 s after the model), so the model's standing only hides the phase (<see cref="PhaseFilterSettings.WalkOnStepClock"/>)
+        /// and the walk is shown in one piece; without it, in two.
+        /// </summary>
+        [TestCase("svm")]
+        [TestCase("blstm")]
+        public void AWalkTheModelDropsEarlyGoesOnWhileTheStepClockWalks(string kind)
+        {
+            var models = Models;
+            var rec = WalkingStreamGenerator.Generate("walk from still", GaitSubject.Random(7), new StreamScript().Stand(8).Walk(15, Foot.Left).Stand(2), 7);
+            List<GaitPrediction> Run(bool onStepClock, double flickerAfter)
+            {
+                var settings = Settings(kind, true);
+                settings.WalkOnStepClock = onStepClock;
+                var c = Create(models, kind, settings);
+                c.WalkClockSettings = models.Threshold;
+                var model = new FlickersEarly(c) { WalkFrom = 8, WalkTo = 23 };
+                c.Evaluator = model;
+                var shown = new List<GaitPrediction>();
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(c.WindowLength, StepRhythm.HistorySamples) });
+                double firstShown = double.NaN;
+                foreach (var sample in rec.Samples)
+                    pre.Push(sample.Imu, w =>
+                    {
+                        model.Time = w.EndTime;
+                        var p = c.Classify(w);
+                        shown.Add(p);
+                        if (p.IsWalking && double.IsNaN(firstShown) && !double.IsNaN(flickerAfter))
+                        {
+                            firstShown = w.EndTime;
+                            model.FlickerFrom = firstShown + flickerAfter;
+                            model.FlickerTo = model.FlickerFrom + 0.3;
+                        }
+                    });
+                return shown;
+            }
+            int Walks(List<GaitPrediction> p) => p.Where((x, i) => x.IsWalking && (i == 0 || !p[i - 1].IsWalking)).Count();
+            Assert.That(Walks(Run(false, double.NaN)), Is.EqualTo(1), "the model's walk without the flicker is one walk");
+            Assert.That(Walks(Run(false, 1.2)), Is.EqualTo(2), "the flicker splits it as the model alone shows it");
+            var with = Run(true, 1.2);
+            Assert.That(Walks(with), Is.EqualTo(1), "the step clock keeps it in one piece");
+            Assert.That(with.Count(x => x.IsWalking), Is.InRange(Run(false, double.NaN).Count(x => x.IsWalking), Run(false, double.NaN).Count(x => x.IsWalking) + 100), "as long as the model's own walk, up to a second more as the step clock stops");
         }
 
         /// <summary>A recording's windows as the classifier scored them, with the gate's verdict, the tilt and the rhythm.</summary>

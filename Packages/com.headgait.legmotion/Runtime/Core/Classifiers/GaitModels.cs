@@ -85,12 +85,12 @@ namespace HeadGait
             {
                 case "blstm":
                 case "blstm-raw":
-                    if (Blstm != null) return new BlstmClassifier(Blstm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : new PhaseFilterSettings());
+                    if (Blstm != null) return WithStepClock(new BlstmClassifier(Blstm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : new PhaseFilterSettings()));
                     warning = $"BLSTM model unusable ({Describe(BlstmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "svm":
                 case "svm-raw":
-                    if (Svm != null) return new SvmClassifier(Svm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : SvmClassifier.DefaultFilter());
+                    if (Svm != null) return WithStepClock(new SvmClassifier(Svm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : SvmClassifier.DefaultFilter()));
                     warning = $"SVM model unusable ({Describe(SvmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "cor":
@@ -103,6 +103,13 @@ namespace HeadGait
                 default:
                     throw new ArgumentException($"Unknown classifier '{name}' (thr, cor, svm or blstm).");
             }
+        }
+
+        /// <summary>The learned classifier, its walks kept going by THR's trained step clock (<see cref="PhaseFilterSettings.WalkOnStepClock"/>).</summary>
+        LearnedClassifier WithStepClock(LearnedClassifier c)
+        {
+            c.WalkClockSettings = Threshold;
+            return c;
         }
 
         string Describe(string file)

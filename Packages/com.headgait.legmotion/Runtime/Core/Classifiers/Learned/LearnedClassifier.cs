@@ -49,6 +49,8 @@ namespace HeadGait
         double walkStartTime = double.NaN;
         double lastShownWalk = double.NaN; // when a walking prediction was last shown (PhaseFilterSettings.FreshWalkShownAfter)
         double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
+        ThresholdClassifier stepClock;     // THR on the model's gate (PhaseFilterSettings.WalkOnStepClock); made on first use
+        double stepClockTime = double.NaN; // end of the last window it read
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -288,7 +290,8 @@ namespace HeadGait
         {
             evaluator.Evaluate(Standardise(window), 1, outputs);
             var gate = JudgeGate(window);
-            return Decide(window.EndTime, window.SampleRate, gate, ReadTilt(window), rhythmPeriod);
+            var tiltReading = ReadTilt(window);
+            return Decide(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, FollowStepClock(window));
         }
 
         /// <summary>
@@ -314,6 +317,34 @@ namespace HeadGait
         /// <see cref="PhaseFilterSettings.HoldOnRhythm"/>): what a batch hands back to <see cref="ClassifyScored"/> per window.
         /// </summary>
         public double RhythmPeriod => rhythmPeriod;
+
+        /// <summary>
+        /// THR's settings for the step clock that keeps walks going (<see cref="PhaseFilterSettings.WalkOnStepClock"/>; its
+        /// walking gate is replaced by <see cref="Gate"/>); null: THR's defaults.
+        /// </summary>
+        public ThresholdSettings WalkClockSettings { get; set; }
+
+        /// <summary>
+        /// Reads the window into THR's step clock on the model's walking gate and returns whether THR shows a walk now
+        /// (one its still-start rules keep back does not count), for <see cref="PhaseFilterSettings.WalkOnStepClock"/>; false with it off or
+        /// without a gate. Call it for every window, in order; a window not after the last one, or over a second after it,
+        /// restarts the clock (<see cref="Reset"/> leaves it be, as it leaves the tilt: a batch reads its windows first).
+        /// </summary>
+        public bool FollowStepClock(SignalWindow window)
+        {
+            if (filter == null || !filter.Settings.WalkOnStepClock || Gate == null) return false;
+            if (stepClock == null || stepClock.Settings.Gate != Gate)
+            {
+                var s = (WalkClockSettings ?? new ThresholdSettings()).Clone();
+                s.Gate = Gate;
+                stepClock = new ThresholdClassifier(s);
+                stepClockTime = double.NaN;
+            }
+            double now = window.EndTime;
+            if (!(now > stepClockTime && now - stepClockTime <= 1)) stepClock.Reset();
+            stepClockTime = now;
+            return stepClock.Classify(window).IsWalking;
+        }
 
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
         public GateVerdict JudgeGate(SignalWindow window)
@@ -348,12 +379,12 @@ namespace HeadGait
         /// <see cref="ILearnedEvaluator.Evaluate"/> writes them). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tilt"/>: what
         /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
-        /// <see cref="JudgeGate"/> judged it (0: none).
+        /// <see cref="JudgeGate"/> judged it (0: none); <paramref name="stepClockWalks"/>: what <see cref="FollowStepClock"/> returned for it.
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0)
+        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0, bool stepClockWalks = false)
         {
             Array.Copy(batchOutputs, row * outputs.Length, outputs, 0, outputs.Length);
-            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod);
+            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod, stepClockWalks);
         }
 
         /// <summary>Whether the last window's prediction was walking.</summary>
@@ -363,7 +394,7 @@ namespace HeadGait
         bool IsYoung(double now) => WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
 
         /// <summary>From the window's outputs (in <see cref="outputs"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod, bool stepClockWalks)
         {
             ClassScores(outputs, scores);
             ToProbabilities(scores, probabilities);
@@ -431,6 +462,16 @@ namespace HeadGait
                     carried = true;
                 }
                 // else carried for SwapCarrySteps and still across the stride: the feet did swap, and the model's class shows.
+            }
+            else if (stepClockWalks && WasWalking && !bending && (gate != GateVerdict.Refuses || IsYoung(now)) && best == Segments.StandingClass)
+            {
+                // THR's step clock still walks, and the gate does not refuse outright or the walk is young
+                // (PhaseFilterSettings.WalkOnStepClock): the model's standing only says it does not know the phase, and
+                // the last one goes on at the step period.
+                double pace = rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
+                carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * pace));
+                best = Segments.At(carriedPosition);
+                carried = true;
             }
             if (best == Segments.StandingClass)
             {

@@ -26,6 +26,7 @@ namespace HeadGait
             public GateVerdict Gate;
             public HeadTiltReading Tilt;
             public double RhythmPeriod;
+            public bool StepClockWalks;
         }
 
         public LearnedWindowBatch(LearnedClassifier classifier)
@@ -52,7 +53,7 @@ namespace HeadGait
                 Array.Resize(ref outputs, capacity * outputCount);
             }
             Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
-            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), Tilt = classifier.ReadTilt(window), RhythmPeriod = classifier.RhythmPeriod });
+            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), Tilt = classifier.ReadTilt(window), RhythmPeriod = classifier.RhythmPeriod, StepClockWalks = classifier.FollowStepClock(window) });
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -89,7 +90,7 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(outputs, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod);
+            return classifier.ClassifyScored(outputs, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod, e.StepClockWalks);
         }
 
         public void Clear()

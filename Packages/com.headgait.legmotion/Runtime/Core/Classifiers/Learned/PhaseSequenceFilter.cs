@@ -153,6 +153,17 @@ namespace HeadGait
         /// (<see cref="SvmClassifier.DefaultFilter"/>). 1: as the model says.
         /// </summary>
         public double YoungWalkStandingWeight = 0.3;
+
+        /// <summary>
+        /// Whether THR's step clock on the model's own walking gate (<see cref="LearnedClassifier.FollowStepClock"/>: its
+        /// contacts, the gate's score to start, the rhythm's ride-outs, its still-start rules) keeps a walk going: while THR
+        /// shows a walk, and the gate does not refuse outright (the rhythm not holding the walk) or the walk is younger than
+        /// <see cref="HeadTilt.YoungWalk"/>, a walk the model shows goes on when the model's belief turns
+        /// to standing, its stride position carried on at the step period (the model then only tells the phase). THR and
+        /// COR keep a walk in one piece this way with the same gate, where the models' belief turned to standing in a walk's
+        /// first half second. The SVM sets it (<see cref="SvmClassifier.DefaultFilter"/>); see the measurements log.
+        /// </summary>
+        public bool WalkOnStepClock = false;
     }
 
     /// <summary>
