@@ -224,7 +224,7 @@ namespace HeadGait.Calibration
                 if (learned == null) profile.LearnedGain = 1;
                 else
                 {
-                    LearnedClassifier Make(ModelFile f) => isSvm ? (LearnedClassifier)new SvmClassifier(f, SvmClassifier.DefaultFilter()) : new BlstmClassifier(f, new PhaseFilterSettings());
+                    LearnedClassifier Make(ModelFile f) => isSvm ? models.SvmOf(f) : models.BlstmOf(f);
                     var scaled = profile.ScaledModel(learned);
                     if (!Pays(() => Make(scaled), () => Make(learned), walk, a.AcceptMargin) || !LearnedScalingStill(profile, models, still))
                     {
@@ -235,8 +235,8 @@ namespace HeadGait.Calibration
             }
             if (a.LearnedRefit)
             {
-                Refit(profile, models.Svm, f => new SvmClassifier(f, SvmClassifier.DefaultFilter()), walk, a);
-                Refit(profile, models.Blstm, f => new BlstmClassifier(f, new PhaseFilterSettings()), walk, a);
+                Refit(profile, models.Svm, models.SvmOf, walk, a);
+                Refit(profile, models.Blstm, models.BlstmOf, walk, a);
             }
             return profile;
         }
@@ -320,8 +320,8 @@ namespace HeadGait.Calibration
         static bool LearnedScalingStill(WearerProfile profile, GaitModels models, StillCheck still)
         {
             if (still == null) return true;
-            if (models.Svm != null && !still.Keeps(f => new SvmClassifier(f, SvmClassifier.DefaultFilter()), models.Svm, profile.ScaledModel(models.Svm))) return false;
-            if (models.Blstm != null && !still.Keeps(f => new BlstmClassifier(f, new PhaseFilterSettings()), models.Blstm, profile.ScaledModel(models.Blstm))) return false;
+            if (models.Svm != null && !still.Keeps(models.SvmOf, models.Svm, profile.ScaledModel(models.Svm))) return false;
+            if (models.Blstm != null && !still.Keeps(models.BlstmOf, models.Blstm, profile.ScaledModel(models.Blstm))) return false;
             return true;
         }
 

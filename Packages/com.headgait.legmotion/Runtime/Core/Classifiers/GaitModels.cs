@@ -85,12 +85,12 @@ namespace HeadGait
             {
                 case "blstm":
                 case "blstm-raw":
-                    if (Blstm != null) return WithStepClock(new BlstmClassifier(Blstm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : new PhaseFilterSettings()));
+                    if (Blstm != null) return name.EndsWith("-raw", StringComparison.Ordinal) ? new BlstmClassifier(Blstm, null) : BlstmOf(Blstm);
                     warning = $"BLSTM model unusable ({Describe(BlstmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "svm":
                 case "svm-raw":
-                    if (Svm != null) return WithStepClock(new SvmClassifier(Svm, name.EndsWith("-raw", StringComparison.Ordinal) ? null : SvmClassifier.DefaultFilter()));
+                    if (Svm != null) return name.EndsWith("-raw", StringComparison.Ordinal) ? new SvmClassifier(Svm, null) : SvmOf(Svm);
                     warning = $"SVM model unusable ({Describe(SvmFile)}); using {(Correlation != null ? "COR" : "THR")} instead";
                     return Correlation != null ? (IGaitClassifier)new CorrelationClassifier(Correlation) : new ThresholdClassifier(Threshold);
                 case "cor":
@@ -105,7 +105,16 @@ namespace HeadGait
             }
         }
 
-        /// <summary>The learned classifier, its walks kept going by THR's trained step clock (<see cref="PhaseFilterSettings.WalkOnStepClock"/>).</summary>
+        /// <summary>
+        /// The SVM of <paramref name="model"/> (this set's, or a wearer's scaled or refitted copy of it) as <see cref="Create"/>
+        /// makes it: the shipped time filter, and THR's trained step clock to keep its walks going
+        /// (<see cref="PhaseFilterSettings.WalkOnStepClock"/>), so that a calibration judges what the product runs.
+        /// </summary>
+        public LearnedClassifier SvmOf(ModelFile model) => WithStepClock(new SvmClassifier(model, SvmClassifier.DefaultFilter()));
+
+        /// <summary>The BLSTM of <paramref name="model"/> as <see cref="Create"/> makes it (see <see cref="SvmOf"/>).</summary>
+        public LearnedClassifier BlstmOf(ModelFile model) => WithStepClock(new BlstmClassifier(model, new PhaseFilterSettings()));
+
         LearnedClassifier WithStepClock(LearnedClassifier c)
         {
             c.WalkClockSettings = Threshold;
