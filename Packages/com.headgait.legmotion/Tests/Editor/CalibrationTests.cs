@@ -282,6 +282,24 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void TheCalibrationJudgesTheSvmWithTheProductsStepClock()
+        {
+            // A fit scores its SVM candidates with GaitModels.SvmOf, the classifier Create("svm") gives the product: THR's
+            // trained step clock beside it (PhaseFilterSettings.WalkOnStepClock). Built as the fit built it before, THR's
+            // default clock decided 412 of a calm glasses wearer's 12,149 windows otherwise, so the fit judged another classifier.
+            var models = Shipped;
+            var fit = models.SvmOf(models.Svm);
+            Assert.That(fit.WalkClockSettings, Is.SameAs(models.Threshold), "the fit's SVM keeps its walks on THR's trained clock");
+            Assert.That(models.BlstmOf(models.Blstm).WalkClockSettings, Is.SameAs(models.Threshold));
+            string file = Path.Combine(TestData.SharedData("glasses-train"), "cg1a_u09_e097_walking.csv");
+            if (!File.Exists(file)) Assert.Ignore($"{file} not found");
+            var rec = RecordingCsv.Load(file);
+            var trained = ReplayEvaluator.Run(rec, fit, keepTrace: true).Predictions;
+            var defaultClock = ReplayEvaluator.Run(rec, new SvmClassifier(models.Svm, SvmClassifier.DefaultFilter()), keepTrace: true).Predictions;
+            Assert.That(Enumerable.Range(0, trained.Count).Count(i => trained[i].Left != defaultClock[i].Left), Is.GreaterThan(0), "the trained clock matters on a calm wearer");
+        }
+
+        [Test]
         public void TheSvmsShiftsSearchedOnTheWalkReplayedClassifyTheWearersOtherWalkBetter()
         {
             // A calm generated wearer whose stride segments the shipped SVM, with its time filter, shows at the wrong time:
