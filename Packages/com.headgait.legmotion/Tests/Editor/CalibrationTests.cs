@@ -20,6 +20,16 @@ namespace HeadGait.Tests
 
         internal static Recording Unlabelled(Recording r) => new Recording(r.Name, r.Samples.Select(s => new RecordedSample(s.Imu)).ToList());
 
+        /// <summary>The shipped THR, COR and SVM (no BLSTM: the learned refit's tests judge the SVM alone, and faster).</summary>
+        static GaitModels ShippedWithSvmOnly => new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+
+        /// <summary>A calibration session of the generated walk: its head stream and two ankle trackers at 72 Hz.</summary>
+        static CalibrationSession AnkleSession(Recording walk)
+        {
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            return new CalibrationSession(Unlabelled(walk), left, right);
+        }
+
         internal static GaitSubject Wearer()
         {
             var s = GaitSubject.Random(12, "calm-wearer");
@@ -237,9 +247,8 @@ namespace HeadGait.Tests
             // back from disk predicts exactly as the one fitted.
             var wearer = Wearer();
             var walk = Walk(wearer);
-            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
-            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
-            var profile = new CalibrationSession(Unlabelled(walk), left, right).Fit(models, "calm-wearer");
+            var models = ShippedWithSvmOnly;
+            var profile = AnkleSession(walk).Fit(models, "calm-wearer");
             var svm = profile.AdjustmentFor(SvmClassifier.Kind);
             Assert.That(svm, Is.Not.Null, "the SVM's refit pays on a calm wearer's walk");
             Assert.That(svm.Changes, Is.True);
@@ -307,9 +316,8 @@ namespace HeadGait.Tests
             // the whole classifier (a lead of every pair, then pair by pair), they classify the wearer's other walk better.
             var wearer = Wearer();
             var walk = Walk(wearer);
-            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
-            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
-            var session = new CalibrationSession(Unlabelled(walk), left, right);
+            var models = ShippedWithSvmOnly;
+            var session = AnkleSession(walk);
             var searched = session.Fit(models, "calm-wearer");
             var hinge = WearerAdaptation.Fit(models, new[] { session.Labelled() }, "calm-wearer", WearerProfile.FromFootReferences, new AdaptationSettings { LearnedShiftSearch = false });
             var other = WalkingStreamGenerator.Generate("other-walk", wearer, new StreamScript().Stand(2).Walk(20, Foot.Right).Stand(1).Walk(20, Foot.Left, -30).Stand(2), 911);
@@ -322,9 +330,8 @@ namespace HeadGait.Tests
         public void ADamagedLearnedAdjustmentIsRefusedNamingTheFile()
         {
             var walk = Walk(Wearer());
-            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
-            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
-            string text = new CalibrationSession(Unlabelled(walk), left, right).Fit(models, "calm-wearer").Serialize();
+            var models = ShippedWithSvmOnly;
+            string text = AnkleSession(walk).Fit(models, "calm-wearer").Serialize();
             Assert.That(text, Does.Contain("learned.svm.bias_shift="));
             string folder = Path.Combine(Path.GetTempPath(), "headgait-learned-damage-test-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(folder);
