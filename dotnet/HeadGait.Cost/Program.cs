@@ -281,8 +281,8 @@ namespace HeadGait.Cost
         {
             var thr = new ThresholdClassifier(models.Threshold);
             var cor = new CorrelationClassifier(models.Correlation);
-            var svm = new SvmClassifier(models.Svm);
-            var blstm = new BlstmClassifier(models.Blstm);
+            var svm = (SvmClassifier)models.SvmOf(models.Svm); // as the product makes it (THR's trained step clock beside it)
+            var blstm = (BlstmClassifier)models.BlstmOf(models.Blstm);
             // The networks alone run on the classifiers' own instances (one copy of the weights, as in an app): scoring
             // does not touch the time filter's state.
             var blstmNet = blstm;
