@@ -370,8 +370,8 @@ namespace HeadGait.Calibration
         }
 
         /// <summary>
-        /// A walk's windows as a learned classifier meets them (its model's outputs, the gate's verdict, the head's tilt and
-        /// rhythm, whether its step clock walks, the stream's restarts) and their labels, read once, so that the classifier decides them again under other
+        /// A walk's windows as a learned classifier meets them (its model's outputs, what <see cref="LearnedClassifier.Read"/>
+        /// reads of it, the stream's restarts) and their labels, read once, so that the classifier decides them again under other
         /// output shifts (<see cref="LearnedClassifier.ClassifyScored"/>, as a batch does) without scoring or reading them again.
         /// </summary>
         sealed class RecordedWalk
@@ -379,10 +379,7 @@ namespace HeadGait.Calibration
             struct Entry
             {
                 public int Row; // -1: a restart of the stream
-                public double Time, SampleRate, RhythmPeriod;
-                public GateVerdict Gate;
-                public bool StepClockWalks;
-                public HeadTiltReading Tilt;
+                public LearnedClassifier.WindowReading Reading;
                 public bool Labelled;
                 public GaitPhase Left, Right;
             }
@@ -407,7 +404,7 @@ namespace HeadGait.Calibration
                         var outcome = pre.Push(s.Imu, w =>
                         {
                             classifier.Network.Evaluate(classifier.Standardise(w), 1, row);
-                            var e = new Entry { Row = result.rows, Time = w.EndTime, SampleRate = w.SampleRate, Gate = classifier.JudgeGate(w), Tilt = classifier.ReadTilt(w), RhythmPeriod = classifier.RhythmPeriod, StepClockWalks = classifier.FollowStepClock(w) };
+                            var e = new Entry { Row = result.rows, Reading = classifier.Read(w) };
                             if (labels.TryLabelsAt(w.EndTime, out var truth))
                             {
                                 e.Labelled = true;
@@ -435,7 +432,7 @@ namespace HeadGait.Calibration
                         classifier.Reset();
                         continue;
                     }
-                    var p = classifier.ClassifyScored(outputs, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod, e.StepClockWalks);
+                    var p = classifier.ClassifyScored(outputs, e.Row, e.Reading);
                     if (!e.Labelled) continue;
                     feet += 2;
                     if (p.Left != e.Left) wrong++;

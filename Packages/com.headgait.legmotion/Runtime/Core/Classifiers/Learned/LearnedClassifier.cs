@@ -289,9 +289,40 @@ namespace HeadGait
         public GaitPrediction Classify(SignalWindow window)
         {
             evaluator.Evaluate(Standardise(window), 1, outputs);
-            var gate = JudgeGate(window);
+            var reading = Read(window);
+            return Decide(reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks);
+        }
+
+        /// <summary>
+        /// What the classifier reads of a window besides the model's outputs, for <see cref="ClassifyScored(double[], int, in WindowReading)"/>
+        /// to decide it later: its time and rate, the gate's verdict (<see cref="JudgeGate"/>), the head's tilt
+        /// (<see cref="ReadTilt"/>), the rhythm's step period the gate read (<see cref="RhythmPeriod"/>), whether THR's step
+        /// clock walks (<see cref="FollowStepClock"/>).
+        /// </summary>
+        public readonly struct WindowReading
+        {
+            public readonly double Time, SampleRate, RhythmPeriod;
+            public readonly GateVerdict Gate;
+            public readonly HeadTiltReading Tilt;
+            public readonly bool StepClockWalks;
+
+            public WindowReading(double time, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmPeriod, bool stepClockWalks)
+            {
+                Time = time;
+                SampleRate = sampleRate;
+                Gate = gate;
+                Tilt = tilt;
+                RhythmPeriod = rhythmPeriod;
+                StepClockWalks = stepClockWalks;
+            }
+        }
+
+        /// <summary>Reads the window (<see cref="WindowReading"/>); call it for every window, in order, as <see cref="Classify"/> does.</summary>
+        public WindowReading Read(SignalWindow window)
+        {
+            var gate = JudgeGate(window); // reads the rhythm's step period too
             var tiltReading = ReadTilt(window);
-            return Decide(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, FollowStepClock(window));
+            return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, FollowStepClock(window));
         }
 
         /// <summary>
@@ -386,6 +417,10 @@ namespace HeadGait
             Array.Copy(batchOutputs, row * outputs.Length, outputs, 0, outputs.Length);
             return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod, stepClockWalks);
         }
+
+        /// <summary>The window <see cref="Read"/> read, its outputs row <paramref name="row"/> of <paramref name="batchOutputs"/> (see the overload above).</summary>
+        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, in WindowReading reading)
+            => ClassifyScored(batchOutputs, row, reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks);
 
         /// <summary>Whether the last window's prediction was walking.</summary>
         bool WasWalking => lastClass >= 0 && lastClass != Segments.StandingClass;

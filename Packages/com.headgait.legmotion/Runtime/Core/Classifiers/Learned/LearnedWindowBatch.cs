@@ -22,11 +22,8 @@ namespace HeadGait
         struct Entry
         {
             public int Row;
-            public double Time, SampleRate;
-            public GateVerdict Gate;
-            public HeadTiltReading Tilt;
-            public double RhythmPeriod;
-            public bool StepClockWalks;
+            public double Time;
+            public LearnedClassifier.WindowReading Reading;
         }
 
         public LearnedWindowBatch(LearnedClassifier classifier)
@@ -53,7 +50,7 @@ namespace HeadGait
                 Array.Resize(ref outputs, capacity * outputCount);
             }
             Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
-            Add(new Entry { Row = windowCount++, Time = window.EndTime, SampleRate = window.SampleRate, Gate = classifier.JudgeGate(window), Tilt = classifier.ReadTilt(window), RhythmPeriod = classifier.RhythmPeriod, StepClockWalks = classifier.FollowStepClock(window) });
+            Add(new Entry { Row = windowCount++, Time = window.EndTime, Reading = classifier.Read(window) });
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -90,7 +87,7 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(outputs, e.Row, e.Time, e.SampleRate, e.Gate, e.Tilt, e.RhythmPeriod, e.StepClockWalks);
+            return classifier.ClassifyScored(outputs, e.Row, e.Reading);
         }
 
         public void Clear()
