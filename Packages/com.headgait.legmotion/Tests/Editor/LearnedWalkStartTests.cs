@@ -131,6 +131,86 @@ namespace HeadGait.Tests
             Assert.That(with.Count(x => x.IsWalking), Is.InRange(Run(false, double.NaN).Count(x => x.IsWalking), Run(false, double.NaN).Count(x => x.IsWalking) + 100), "as long as the model's own walk, up to a second more as the step clock stops");
         }
 
+        /// <summary>
+        /// A model that walks a generated walker's stride (its segments in order, 1.1-s stride, counted from
+        /// <see cref="WalkFrom"/>) wherever <see cref="WalksAt"/> says so, and stands elsewhere.
+        /// </summary>
+        sealed class Scripted : ILearnedEvaluator
+        {
+            readonly LearnedClassifier classifier;
+            public double Time, WalkFrom;
+            public Func<double, bool> WalksAt = _ => false;
+
+            public Scripted(LearnedClassifier classifier) => this.classifier = classifier;
+
+            public void Evaluate(double[] features, int windows, double[] outputs)
+            {
+                var segments = classifier.Segments;
+                SureOutputs.Write(classifier, WalksAt(Time) ? (int)((Time - WalkFrom) / 1.1 * segments.Count) % segments.Count : segments.StandingClass, outputs);
+            }
+        }
+
+        /// <summary>
+        /// The shipped BLSTM (<see cref="GaitModels.BlstmOf"/>, THR's trained step clock beside it) on a generated walker who
+        /// stands 8 s, walks 15 s and stands 2 s, its network scripted (<see cref="Scripted"/>) to walk with the walker
+        /// wherever <paramref name="walksAt"/> says so; the time filter's settings changed by <paramref name="change"/>.
+        /// </summary>
+        static List<GaitPrediction> ShippedBlstm(Func<double, bool> walksAt, Action<PhaseFilterSettings> change = null)
+        {
+            var models = Models;
+            var rec = WalkingStreamGenerator.Generate("walk from still", GaitSubject.Random(7), new StreamScript().Stand(8).Walk(15, Foot.Left).Stand(2), 7);
+            var c = models.BlstmOf(models.Blstm);
+            change?.Invoke(c.Filter.Settings);
+            var model = new Scripted(c) { WalkFrom = 8, WalksAt = walksAt };
+            c.Evaluator = model;
+            var shown = new List<GaitPrediction>();
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = Math.Max(c.WindowLength, StepRhythm.HistorySamples) });
+            foreach (var sample in rec.Samples)
+                pre.Push(sample.Imu, w =>
+                {
+                    model.Time = w.EndTime;
+                    shown.Add(c.Classify(w));
+                });
+            return shown;
+        }
+
+        static int Walks(List<GaitPrediction> p) => p.Where((x, i) => x.IsWalking && (i == 0 || !p[i - 1].IsWalking)).Count();
+
+        /// <summary>
+        /// The BLSTM's flicker to standing in a walk THR's step clock has shown for over a second (its walk from about 9 s,
+        /// the flicker at 13 s) no longer splits the walk (<see cref="BlstmClassifier.DefaultFilter"/>: the glasses' walking
+        /// files 19 to 9 fragments); before, the BLSTM ran without the step clock and showed two walks.
+        /// </summary>
+        [Test]
+        public void TheBlstmsWalkGoesOnThroughAFlickerOnceTheStepClocksWalkHasSettled()
+        {
+            bool Flickers(double t) => t >= 8 && t < 23 && !(t >= 13 && t < 13.3);
+            var without = ShippedBlstm(Flickers, s => s.WalkOnStepClock = false);
+            Assert.That(Walks(without), Is.EqualTo(2), "the flicker splits the walk as the BLSTM alone shows it");
+            var shipped = ShippedBlstm(Flickers);
+            Assert.That(Walks(shipped), Is.EqualTo(1), "THR's settled walk carries it through the flicker");
+            Assert.That(shipped.Count(p => p.IsWalking), Is.InRange(without.Count(p => p.IsWalking) + 25, without.Count(p => p.IsWalking) + 130),
+                "the flicker's 0.3 s shown walking, and up to a second more as the step clock stops");
+        }
+
+        /// <summary>
+        /// A walk THR's step clock shows while the BLSTM says standing but for a blip now and then (from 11 s on, 0.1 s of
+        /// walking every 1.5 s): as on the glasses' standing files, where the carry as the SVM runs it
+        /// (<see cref="PhaseFilterSettings.StepClockOwnWalkingShare"/> 0) carried such blips for as long as THR walked. The
+        /// BLSTM's own walking share runs out about a second after its walk ends, and the blips do not bring it back.
+        /// </summary>
+        [Test]
+        public void TheStepClockDoesNotCarryAWalkTheBlstmItselfBarelyShows()
+        {
+            bool Blips(double t) => t >= 8 && t < 11 || t >= 11 && t < 23 && (t - 11) % 1.5 < 0.1;
+            int After(List<GaitPrediction> p) => p.Count(x => x.IsWalking && x.Time >= 11);
+            int anyShare = After(ShippedBlstm(Blips, s => s.StepClockOwnWalkingShare = 0));
+            int shipped = After(ShippedBlstm(Blips));
+            TestContext.WriteLine($"windows shown walking after the BLSTM's walk ended: any own share {anyShare}, shipped {shipped}");
+            Assert.That(anyShare, Is.GreaterThan(800), "without the share, THR's walk carries the blips through to its end");
+            Assert.That(shipped, Is.LessThan(300), "with it, about a second after the walk and the blips themselves");
+        }
+
         /// <summary>A recording's windows as the classifier scored them, with the gate's verdict, the tilt and the rhythm.</summary>
         sealed class ScoredRecording
         {

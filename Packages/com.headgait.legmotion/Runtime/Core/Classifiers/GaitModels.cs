@@ -113,7 +113,7 @@ namespace HeadGait
         public LearnedClassifier SvmOf(ModelFile model) => WithStepClock(new SvmClassifier(model, SvmClassifier.DefaultFilter()));
 
         /// <summary>The BLSTM of <paramref name="model"/> as <see cref="Create"/> makes it (see <see cref="SvmOf"/>).</summary>
-        public LearnedClassifier BlstmOf(ModelFile model) => WithStepClock(new BlstmClassifier(model, new PhaseFilterSettings()));
+        public LearnedClassifier BlstmOf(ModelFile model) => WithStepClock(new BlstmClassifier(model, BlstmClassifier.DefaultFilter()));
 
         LearnedClassifier WithStepClock(LearnedClassifier c)
         {

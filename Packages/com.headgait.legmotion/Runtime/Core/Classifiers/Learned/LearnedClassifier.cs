@@ -51,6 +51,8 @@ namespace HeadGait
         double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
         ThresholdClassifier stepClock;     // THR on the model's gate (PhaseFilterSettings.WalkOnStepClock); made on first use
         double stepClockTime = double.NaN; // end of the last window it read
+        double stepClockWalkingSince = double.NaN; // when its walk going on began; NaN while it stands
+        double ownWalkingShare; // the model's own walking share, averaged over PhaseFilterSettings.OwnWalkingSpan
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
         {
@@ -256,6 +258,7 @@ namespace HeadGait
             still.Reset();
             lastShownWalk = double.NaN;
             lastSurePass = double.NaN;
+            ownWalkingShare = 0;
         }
 
         /// <summary>Standardised features of a window, as the model sees them.</summary>
@@ -357,8 +360,8 @@ namespace HeadGait
 
         /// <summary>
         /// Reads the window into THR's step clock on the model's walking gate and returns whether THR shows a walk now
-        /// (one its still-start rules keep back does not count), for <see cref="PhaseFilterSettings.WalkOnStepClock"/>; false with it off or
-        /// without a gate. Call it for every window, in order; a window not after the last one, or over a second after it,
+        /// (one its still-start rules keep back does not count) and has shown it for <see cref="PhaseFilterSettings.StepClockWalkAge"/>,
+        /// for <see cref="PhaseFilterSettings.WalkOnStepClock"/>; false with it off or without a gate. Call it for every window, in order; a window not after the last one, or over a second after it,
         /// restarts the clock (<see cref="Reset"/> leaves it be, as it leaves the tilt: a batch reads its windows first).
         /// </summary>
         public bool FollowStepClock(SignalWindow window)
@@ -372,9 +375,19 @@ namespace HeadGait
                 stepClockTime = double.NaN;
             }
             double now = window.EndTime;
-            if (!(now > stepClockTime && now - stepClockTime <= 1)) stepClock.Reset();
+            if (!(now > stepClockTime && now - stepClockTime <= 1))
+            {
+                stepClock.Reset();
+                stepClockWalkingSince = double.NaN;
+            }
             stepClockTime = now;
-            return stepClock.Classify(window).IsWalking;
+            if (!stepClock.Classify(window).IsWalking)
+            {
+                stepClockWalkingSince = double.NaN;
+                return false;
+            }
+            if (double.IsNaN(stepClockWalkingSince)) stepClockWalkingSince = now;
+            return now - stepClockWalkingSince >= filter.Settings.StepClockWalkAge;
         }
 
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
@@ -481,6 +494,8 @@ namespace HeadGait
                     best = MostLikelyWalking(p);
                 }
             }
+            if (filter != null)
+                ownWalkingShare += ((best != Segments.StandingClass ? 1 : 0) - ownWalkingShare) * Math.Min(1, dt / Math.Max(dt, filter.Settings.OwnWalkingSpan));
             bool carried = false;
             double carriedPosition = 0;
             if (filter != null && WasWalking && best != Segments.StandingClass)
@@ -498,11 +513,10 @@ namespace HeadGait
                 }
                 // else carried for SwapCarrySteps and still across the stride: the feet did swap, and the model's class shows.
             }
-            else if (stepClockWalks && WasWalking && !bending && (gate != GateVerdict.Refuses || IsYoung(now)) && best == Segments.StandingClass)
+            else if (stepClockWalks && WasWalking && !bending && best == Segments.StandingClass && CarriesOnStepClock(gate, now))
             {
-                // THR's step clock still walks, and the gate does not refuse outright or the walk is young
-                // (PhaseFilterSettings.WalkOnStepClock): the model's standing only says it does not know the phase, and
-                // the last one goes on at the step period.
+                // THR's step clock still walks (PhaseFilterSettings.WalkOnStepClock): the model's standing only says it
+                // does not know the phase, and the last one goes on at the step period.
                 double pace = rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
                 carriedPosition = PhaseMap.Wrap(lastPosition + dt / (2 * pace));
                 best = Segments.At(carriedPosition);
@@ -531,6 +545,17 @@ namespace HeadGait
             lastShownWalk = now;
             double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
             return GaitPrediction.Walking(now, s, shownPeriod, p[best], Segments.Left(best), Segments.Right(best));
+        }
+
+        /// <summary>
+        /// Whether a walk THR's step clock still shows goes on through the model's standing (<see cref="PhaseFilterSettings.WalkOnStepClock"/>):
+        /// the gate does not refuse outright, the walk is young, or refusals are carried (<see cref="PhaseFilterSettings.StepClockThroughRefusals"/>);
+        /// and the model itself has walked enough of the last moments (<see cref="PhaseFilterSettings.StepClockOwnWalkingShare"/>).
+        /// </summary>
+        bool CarriesOnStepClock(GateVerdict gate, double now)
+        {
+            var s = filter.Settings;
+            return (gate != GateVerdict.Refuses || s.StepClockThroughRefusals || IsYoung(now)) && ownWalkingShare >= s.StepClockOwnWalkingShare;
         }
 
         /// <summary>

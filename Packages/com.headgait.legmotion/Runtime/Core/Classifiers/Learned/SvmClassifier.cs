@@ -55,7 +55,7 @@ namespace HeadGait
         /// walking file, at 0.1 19 (standing shown as walking 0.5 to 0.7 %), at 0.03 19 (0.8 %).
         /// THR's step clock keeps its walks going (<see cref="PhaseFilterSettings.WalkOnStepClock"/>): on the glasses
         /// (in-sample, avatar) fragments 19 to 12, walking shown 91.7 to 94.1 %, standing 0.7 to 1.0 %, picking up 1.5 to
-        /// 2.0 %; the BLSTM keeps it off (its standing 1.0 to 1.5 %, picking up 1.8 to 2.6 %).
+        /// 2.0 %; the BLSTM runs it only once THR's walk has settled (<see cref="BlstmClassifier.DefaultFilter"/>).
         /// </summary>
         public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings { EvidenceWeight = 0.5, YoungWalkStandingWeight = 0.1, WalkOnStepClock = true };
 
