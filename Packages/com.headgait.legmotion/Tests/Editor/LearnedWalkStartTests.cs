@@ -88,8 +88,10 @@ namespace HeadGait.Tests
         /// A generated walker stands 8 s, walks 15 s and stands; the model walks with it but stands for 0.3 s 1.2 s after its
         /// walk is first shown (<see cref="FlickersEarly"/>), before the head's rhythm (2.5 s) could hold it. THR's step clock
         /// on the model's own walking gate shows the walk by then (from its second contact after the still start, about
-        /// 1 s after the model), so the model's standing only hides the phase (<see cref="PhaseFilterSettings.WalkOnStepClock"/>)
-        /// and the walk is shown in one piece; without it, in two.
+        /// 1 s after the model), so the model's standing only hides the phase (<see cref="PhaseFilterSettings.WalkOnStepClock"/>
+        /// with THR's walk carried at once, <see cref="PhaseFilterSettings.StepClockWalkAge"/> 0; as shipped THR's walk must be a
+        /// second old, see <see cref="TheBlstmsWalkGoesOnThroughAFlickerOnceTheStepClocksWalkHasSettled"/>) and the walk is
+        /// shown in one piece; without it, in two.
         /// </summary>
         [TestCase("svm")]
         [TestCase("blstm")]
@@ -101,6 +103,7 @@ namespace HeadGait.Tests
             {
                 var settings = Settings(kind, true);
                 settings.WalkOnStepClock = onStepClock;
+                settings.StepClockWalkAge = 0;
                 var c = Create(models, kind, settings);
                 c.WalkClockSettings = models.Threshold;
                 var model = new FlickersEarly(c) { WalkFrom = 8, WalkTo = 23 };
@@ -151,15 +154,16 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
-        /// The shipped BLSTM (<see cref="GaitModels.BlstmOf"/>, THR's trained step clock beside it) on a generated walker who
-        /// stands 8 s, walks 15 s and stands 2 s, its network scripted (<see cref="Scripted"/>) to walk with the walker
+        /// The shipped BLSTM (<see cref="GaitModels.BlstmOf"/>, THR's trained step clock beside it), or the shipped SVM
+        /// (<see cref="GaitModels.SvmOf"/>) when <paramref name="kind"/> says so, on a generated walker who
+        /// stands 8 s, walks 15 s and stands 2 s, its model scripted (<see cref="Scripted"/>) to walk with the walker
         /// wherever <paramref name="walksAt"/> says so; the time filter's settings changed by <paramref name="change"/>.
         /// </summary>
-        static List<GaitPrediction> ShippedBlstm(Func<double, bool> walksAt, Action<PhaseFilterSettings> change = null)
+        static List<GaitPrediction> ShippedModel(Func<double, bool> walksAt, Action<PhaseFilterSettings> change = null, string kind = BlstmClassifier.Kind)
         {
             var models = Models;
             var rec = WalkingStreamGenerator.Generate("walk from still", GaitSubject.Random(7), new StreamScript().Stand(8).Walk(15, Foot.Left).Stand(2), 7);
-            var c = models.BlstmOf(models.Blstm);
+            var c = kind == SvmClassifier.Kind ? models.SvmOf(models.Svm) : models.BlstmOf(models.Blstm);
             change?.Invoke(c.Filter.Settings);
             var model = new Scripted(c) { WalkFrom = 8, WalksAt = walksAt };
             c.Evaluator = model;
@@ -185,27 +189,28 @@ namespace HeadGait.Tests
         public void TheBlstmsWalkGoesOnThroughAFlickerOnceTheStepClocksWalkHasSettled()
         {
             bool Flickers(double t) => t >= 8 && t < 23 && !(t >= 13 && t < 13.3);
-            var without = ShippedBlstm(Flickers, s => s.WalkOnStepClock = false);
+            var without = ShippedModel(Flickers, s => s.WalkOnStepClock = false);
             Assert.That(Walks(without), Is.EqualTo(2), "the flicker splits the walk as the BLSTM alone shows it");
-            var shipped = ShippedBlstm(Flickers);
+            var shipped = ShippedModel(Flickers);
             Assert.That(Walks(shipped), Is.EqualTo(1), "THR's settled walk carries it through the flicker");
             Assert.That(shipped.Count(p => p.IsWalking), Is.InRange(without.Count(p => p.IsWalking) + 25, without.Count(p => p.IsWalking) + 130),
                 "the flicker's 0.3 s shown walking, and up to a second more as the step clock stops");
         }
 
         /// <summary>
-        /// A walk THR's step clock shows while the BLSTM says standing but for a blip now and then (from 11 s on, 0.1 s of
-        /// walking every 1.5 s): as on the glasses' standing files, where the carry as the SVM runs it
-        /// (<see cref="PhaseFilterSettings.StepClockOwnWalkingShare"/> 0) carried such blips for as long as THR walked. The
-        /// BLSTM's own walking share runs out about a second after its walk ends, and the blips do not bring it back.
+        /// A walk THR's step clock shows while the model says standing but for a blip now and then (from 11 s on, 0.1 s of
+        /// walking every 1.5 s): as on the glasses' standing files, where the carry with any own share
+        /// (<see cref="PhaseFilterSettings.StepClockOwnWalkingShare"/> 0, the SVM's before) carried such blips for as long as
+        /// THR walked. The model's own walking share runs out about a second after its walk ends, and the blips do not bring it back.
         /// </summary>
-        [Test]
-        public void TheStepClockDoesNotCarryAWalkTheBlstmItselfBarelyShows()
+        [TestCase(BlstmClassifier.Kind)]
+        [TestCase(SvmClassifier.Kind)]
+        public void TheStepClockDoesNotCarryAWalkTheModelItselfBarelyShows(string kind)
         {
             bool Blips(double t) => t >= 8 && t < 11 || t >= 11 && t < 23 && (t - 11) % 1.5 < 0.1;
             int After(List<GaitPrediction> p) => p.Count(x => x.IsWalking && x.Time >= 11);
-            int anyShare = After(ShippedBlstm(Blips, s => s.StepClockOwnWalkingShare = 0));
-            int shipped = After(ShippedBlstm(Blips));
+            int anyShare = After(ShippedModel(Blips, s => s.StepClockOwnWalkingShare = 0, kind));
+            int shipped = After(ShippedModel(Blips, kind: kind));
             TestContext.WriteLine($"windows shown walking after the BLSTM's walk ended: any own share {anyShare}, shipped {shipped}");
             Assert.That(anyShare, Is.GreaterThan(800), "without the share, THR's walk carries the blips through to its end");
             Assert.That(shipped, Is.LessThan(300), "with it, about a second after the walk and the blips themselves");

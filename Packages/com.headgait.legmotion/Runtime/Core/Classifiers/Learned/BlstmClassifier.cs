@@ -41,12 +41,9 @@ namespace HeadGait
         /// second (<see cref="PhaseFilterSettings.StepClockOwnWalkingShare"/>), through the gate's outright refusals too
         /// (<see cref="PhaseFilterSettings.StepClockThroughRefusals"/>). On the real glasses (in-sample, avatar): fragments per
         /// walking file 19 to 9, walking shown 90.8 to 93.9 %, standing, sitting and picking up shown as walking unchanged
-        /// (1.0, 0.6, 1.8 %); the SVM's carry as it is (no age, no share) gave 1.5 and 2.6 % (see the measurements log).
+        /// (1.0, 0.6, 1.8 %); with no age and no share (the SVM's carry before) 1.5 and 2.6 % (see the measurements log).
         /// </summary>
-        public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings
-        {
-            WalkOnStepClock = true, StepClockWalkAge = 1, StepClockOwnWalkingShare = 0.3, StepClockThroughRefusals = true,
-        };
+        public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings { WalkOnStepClock = true };
 
         /// <summary>With the given time filter, or none (null): the network's own per-window answers, as the paper's classifier.</summary>
         public BlstmClassifier(ModelFile model, PhaseFilterSettings filter) : base(model, Kind, filter)

@@ -157,41 +157,40 @@ namespace HeadGait
         /// <summary>
         /// Whether THR's step clock on the model's own walking gate (<see cref="LearnedClassifier.FollowStepClock"/>: its
         /// contacts, the gate's score to start, the rhythm's ride-outs, its still-start rules) keeps a walk going: while THR
-        /// shows a walk, and the gate does not refuse outright (the rhythm not holding the walk) or the walk is younger than
-        /// <see cref="HeadTilt.YoungWalk"/>, a walk the model shows goes on when the model's belief turns
-        /// to standing, its stride position carried on at the step period (the model then only tells the phase). THR and
-        /// COR keep a walk in one piece this way with the same gate, where the models' belief turned to standing in a walk's
-        /// first half second. The SVM and the BLSTM set it (<see cref="SvmClassifier.DefaultFilter"/>,
-        /// <see cref="BlstmClassifier.DefaultFilter"/>: the BLSTM with the three settings below); see the measurements log.
+        /// shows a settled walk and the model has walked enough of the last second (the three settings below), a walk the
+        /// model shows goes on when the model's belief turns to standing, its stride position carried on at the step period
+        /// (the model then only tells the phase). THR and COR keep a walk in one piece this way with the same gate, where the
+        /// models' belief turned to standing in a walk's first half second. The SVM and the BLSTM set it
+        /// (<see cref="SvmClassifier.DefaultFilter"/>, <see cref="BlstmClassifier.DefaultFilter"/>); see the measurements log.
         /// </summary>
         public bool WalkOnStepClock = false;
 
         /// <summary>
         /// With <see cref="WalkOnStepClock"/>: THR's walk keeps the model's going only once THR has shown it this long (s).
         /// The still activities' false walks the carry lengthened were THR's own young ones (the BLSTM on the glasses: 90 % of
-        /// them under 1 s old where the carry began; in the walking files half were over 4 s old). 0: at once (the SVM).
+        /// them under 1 s old where the carry began; in the walking files half were over 4 s old). 0: at once.
         /// </summary>
-        public double StepClockWalkAge = 0;
+        public double StepClockWalkAge = 1;
 
         /// <summary>
         /// With <see cref="WalkOnStepClock"/>: the model's walk is carried only while its own filtered class has named a
         /// walking class for at least this share of the last <see cref="OwnWalkingSpan"/> (an exponential average): the carry
         /// bridges the model's flickers within its own walk, not a walk THR shows while the model mostly says standing, and a
-        /// carry the model does not come back to runs out. 0: any share (the SVM).
+        /// carry the model does not come back to runs out. 0: any share.
         /// </summary>
-        public double StepClockOwnWalkingShare = 0;
+        public double StepClockOwnWalkingShare = 0.3;
 
         /// <summary>Seconds over which the model's own walking share is averaged (<see cref="StepClockOwnWalkingShare"/>).</summary>
         public double OwnWalkingSpan = 1;
 
         /// <summary>
         /// With <see cref="WalkOnStepClock"/>: the walk is carried where the gate refuses outright too (the head's rhythm not
-        /// holding it), at any age; false: only where it does not or the walk is younger than <see cref="HeadTilt.YoungWalk"/>
-        /// (the SVM). With THR's walk settled (<see cref="StepClockWalkAge"/>) and the model's own share asked
+        /// holding it), at any age; false: only where it does not or the walk is younger than <see cref="HeadTilt.YoungWalk"/>.
+        /// With THR's walk settled (<see cref="StepClockWalkAge"/>) and the model's own share asked
         /// (<see cref="StepClockOwnWalkingShare"/>), the still activities' false walks are not carried anyway, and a walking
         /// head's bounce the gate misses for a moment no longer breaks the walk.
         /// </summary>
-        public bool StepClockThroughRefusals = false;
+        public bool StepClockThroughRefusals = true;
     }
 
     /// <summary>
