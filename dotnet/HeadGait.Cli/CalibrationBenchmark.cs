@@ -214,6 +214,7 @@ namespace HeadGait.Cli
                     else if (key.StartsWith("still-slack=", StringComparison.Ordinal)) a.StillSlack = Number(key.Substring(12));
                     else if (key.StartsWith("short-margin=", StringComparison.Ordinal)) a.ShortWalkMargin = Number(key.Substring(13));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
+                    else if (key.StartsWith("time-scale-share=", StringComparison.Ordinal)) a.LearnedTimeScaleShare = Number(key.Substring(17));
                     else
                         switch (key)
                         {
@@ -227,11 +228,13 @@ namespace HeadGait.Cli
                             case "learned-refit": a.LearnedRefit = on; break;
                             case "learned-channels": a.LearnedChannelGains = on; break;
                             case "learned-search": a.LearnedShiftSearch = on; break;
+                            case "learned-time-scale": a.LearnedTimeScale = on; break;
+                            case "time-scale-up": a.LearnedTimeScaleUpward = on; break;
                             case "open-labels": a.LabelWithGateOpen = on; break;
                             case "fill-missed": a.FillMissedSteps = on; break;
                             case "cor-fuller": a.PreferFullerCorRefit = on; break;
                             case "still-check": a.StillCheck = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, learned-time-scale, time-scale-up, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, time-scale-share=SHARE, prior=STEPS, margin=SHARE, short-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -245,7 +248,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LearnedTimeScale ? $"learned-time-scale ({(a.LearnedTimeScaleUpward ? "" : "quicker wearers only, ")}share {a.LearnedTimeScaleShare:0.##})" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", double.IsNaN(a.ShortWalkMargin) ? null : $"(COR {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps)", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>
@@ -258,7 +261,7 @@ namespace HeadGait.Cli
             return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s), THR {4}, learned gain {5:F2}{6}{7}", p.Steps,
                 p.Correlation.Templates.Count > models.Correlation.Templates.Count ? "own step" : "as trained", p.Correlation.MinCorrelation, p.Correlation.ClockLead,
                 p.Threshold.Serialize() == models.Threshold.Serialize() ? "as trained" : string.Format(ci, "floor {0:F2} (trained {1:F2})", p.Threshold.Floor, models.Threshold.Floor),
-                p.LearnedGain, p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "", refits);
+                p.LearnedGain, (p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "") + (p.LearnedTimeScale != 1 ? string.Format(ci, ", learned time scale {0:F2}", p.LearnedTimeScale) : ""), refits);
         }
 
         /// <summary>The BVH a converted recording names in its source line, when it is in the folder.</summary>

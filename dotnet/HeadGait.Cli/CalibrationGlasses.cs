@@ -87,9 +87,9 @@ namespace HeadGait.Cli
                         rises[(clf, kv.Key)] = (r.risen, r.people + 1);
                     }
                 }
-                Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-10} {1} sure steps of {2:F0} s; COR {3}, THR {4}, learned gain {5:F2}; fitted in {6:F1} s", person.Key, profile.Steps, first.Duration,
+                Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-10} {1} sure steps of {2:F0} s; COR {3}, THR {4}, learned gain {5:F2}{7}; fitted in {6:F1} s", person.Key, profile.Steps, first.Duration,
                     profile.Correlation.Templates.Count > shipped.Correlation.Templates.Count ? "own step added" : "as shipped",
-                    profile.Threshold.Serialize() == shipped.Threshold.Serialize() ? "as shipped" : "refitted", profile.LearnedGain, fitSeconds));
+                    profile.Threshold.Serialize() == shipped.Threshold.Serialize() ? "as shipped" : "refitted", profile.LearnedGain, fitSeconds, profile.LearnedTimeScale != 1 ? string.Format(CultureInfo.InvariantCulture, ", learned time scale {0:F2}", profile.LearnedTimeScale) : ""));
             }
             Console.WriteLine();
             Console.WriteLine("Share of the rest of the walk (where the signal shows steps) shown as walking by the classifier / the avatar; still activities' time shown as walking (classifier / avatar):");

@@ -355,8 +355,8 @@ namespace HeadGait.Tests
                 Damaged(WearerProfile.Magic, WearerProfile.MagicV1, "v1 profile holds no learned adjustments");
                 File.WriteAllText(path, string.Join("\n", text.Split('\n').Where(l => !l.StartsWith("learned.svm.channel_gain", StringComparison.Ordinal))));
                 Assert.That(Assert.Throws<FormatException>(() => WearerProfile.Load(path)).Message, Does.Contain(path).And.Contain("lacks 'learned.svm.channel_gain'"));
-                // A profile of the first version (no learned block) still reads.
-                string v1 = string.Join("\n", text.Split('\n').Where(l => !l.StartsWith("learned.", StringComparison.Ordinal))).Replace(WearerProfile.Magic, WearerProfile.MagicV1);
+                // A profile of the first version (no learned block, no time scale) still reads.
+                string v1 = string.Join("\n", text.Split('\n').Where(l => !l.StartsWith("learned.", StringComparison.Ordinal) && !l.StartsWith("learned_time_scale=", StringComparison.Ordinal))).Replace(WearerProfile.Magic, WearerProfile.MagicV1);
                 File.WriteAllText(path, v1);
                 Assert.That(WearerProfile.Load(path).LearnedAdjustments, Is.Empty);
             }

@@ -391,7 +391,7 @@ namespace HeadGait.Calibration
             public static RecordedWalk Of(LearnedClassifier classifier, IReadOnlyList<Recording> walk)
             {
                 var result = new RecordedWalk();
-                int k = classifier.OutputCount;
+                int k = classifier.WindowOutputCount;
                 var row = new double[k];
                 foreach (var rec in walk)
                 {
@@ -403,7 +403,7 @@ namespace HeadGait.Calibration
                     {
                         var outcome = pre.Push(s.Imu, w =>
                         {
-                            classifier.Network.Evaluate(classifier.Standardise(w), 1, row);
+                            classifier.Network.Evaluate(classifier.StandardiseRows(w), classifier.RowsPerWindow, row);
                             var e = new Entry { Row = result.rows, Reading = classifier.Read(w) };
                             if (labels.TryLabelsAt(w.EndTime, out var truth))
                             {
@@ -450,16 +450,17 @@ namespace HeadGait.Calibration
             foreach (var rec in walk)
             {
                 var labels = new LabelCursor(rec);
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = classifier.Features.Samples });
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = classifier.ModelSpan });
                 int n = 0;
                 foreach (var s in rec.Samples)
                     pre.Push(s.Imu, w =>
                     {
-                        if (w.Length < classifier.Features.Samples || n++ % WindowStride != 0 || !labels.TryLabelsAt(w.EndTime + LabelLead, out var truth)) return;
+                        // The lead is the model's: at a time scale it spans that many more seconds of the wearer's walk.
+                        if (n++ % WindowStride != 0 || !labels.TryLabelsAt(w.EndTime + LabelLead * classifier.TimeScale, out var truth)) return;
                         int cls = classifier.Segments.ClassOf(truth.Left, truth.Right);
                         if (cls < 0) return;
                         var raw = new double[width];
-                        classifier.Features.Extract(w, raw);
+                        classifier.ReadFeatures(w, raw);
                         result.Raw.Add(raw);
                         result.Class.Add(cls);
                     });

@@ -7,17 +7,20 @@ using System.Text;
 namespace HeadGait.Calibration
 {
     /// <summary>
-    /// What a calibration walk fitted to one wearer, saved as a small text file (<c># headgait-wearer-profile v2</c>; v1,
-    /// without the learned adjustments, still reads): THR's settings and COR's templates in full (their own keys, prefixed
-    /// <c>thr.</c> and <c>cor.</c>, read back by their own parsers), how much further the walking gates open for this
-    /// wearer, the learned models' input gain, each learned model's refitted channel gains and output biases
+    /// What a calibration walk fitted to one wearer, saved as a small text file (<c># headgait-wearer-profile v3</c>; v2,
+    /// without the learned time scale, and v1, without the learned adjustments too, still read): THR's settings and COR's
+    /// templates in full (their own keys, prefixed <c>thr.</c> and <c>cor.</c>, read back by their own parsers), how much
+    /// further the walking gates open for this wearer, the learned models' input gain and time scale, each learned model's refitted channel gains and output biases
     /// (<c>learned.svm.</c>, <c>learned.blstm.</c>, <see cref="LearnedAdjustment"/>), and which models it was fitted against. <see cref="Apply"/> gives adapted copies of the models; the models themselves are never changed.
     /// </summary>
     public sealed class WearerProfile
     {
-        public const string Magic = "# headgait-wearer-profile v2";
+        public const string Magic = "# headgait-wearer-profile v3";
 
-        /// <summary>The first version's magic line: read as ever (no learned adjustments).</summary>
+        /// <summary>The second version's magic line: read as ever (no learned time scale: 1).</summary>
+        public const string MagicV2 = "# headgait-wearer-profile v2";
+
+        /// <summary>The first version's magic line: read as ever (no learned adjustments, no learned time scale).</summary>
         public const string MagicV1 = "# headgait-wearer-profile v1";
         public const string Extension = ".profile.txt";
 
@@ -34,6 +37,9 @@ namespace HeadGait.Calibration
 
         /// <summary>Range of the learned models' input gain (the wearer's bounce brought towards the training walkers').</summary>
         public const double MinLearnedGain = 0.75, MaxLearnedGain = 1.5;
+
+        /// <summary>Range of the learned models' time scale (seconds of the wearer's signal per second of the model's window; within the classifier's own bounds).</summary>
+        public const double MinLearnedTimeScale = 0.7, MaxLearnedTimeScale = 1.8;
 
         public const string FromFootReferences = "foot-references";
         public const string SelfSupervised = "self-supervised";
@@ -53,6 +59,11 @@ namespace HeadGait.Calibration
         public double LearnedGateShift;
         /// <summary>Factor on the acceleration the SVM and BLSTM read (through their input scaling).</summary>
         public double LearnedGain = 1;
+        /// <summary>
+        /// Seconds of the wearer's signal the SVM and BLSTM read per second of their window (<see cref="LearnedClassifier.TimeScale"/>):
+        /// above 1 a slow wearer's steps are read as quick as the training walkers'. 1: the window as it is.
+        /// </summary>
+        public double LearnedTimeScale = 1;
         /// <summary>The SVM's and the BLSTM's refitted channel gains and output biases, each for the model it was fitted against (none: empty).</summary>
         public List<LearnedAdjustment> LearnedAdjustments = new List<LearnedAdjustment>();
 
@@ -75,7 +86,7 @@ namespace HeadGait.Calibration
 
         /// <summary>
         /// Adapted copies of <paramref name="models"/> for this wearer: THR and COR from the profile (each with its gate), the
-        /// SVM and BLSTM with their input scaled by <see cref="LearnedGain"/> and their gate opened by <see cref="LearnedGateShift"/>.
+        /// SVM and BLSTM with their input scaled by <see cref="LearnedGain"/>, read at <see cref="LearnedTimeScale"/>, and their gate opened by <see cref="LearnedGateShift"/>.
         /// Problems of the models carry over; a classifier the models lack stays absent.
         /// </summary>
         public GaitModels Apply(GaitModels models)
@@ -110,7 +121,11 @@ namespace HeadGait.Calibration
             return adjustment.AppliedTo(scaled, biasName);
         }
 
-        /// <summary>A copy of a learned model whose input scaling reads the acceleration times <see cref="LearnedGain"/> and whose gate is opened by <see cref="LearnedGateShift"/>.</summary>
+        /// <summary>
+        /// A copy of a learned model whose input scaling reads the acceleration times <see cref="LearnedGain"/>, whose window
+        /// reads <see cref="LearnedTimeScale"/> times its span (<see cref="LearnedClassifier.WearerTimeScaleKey"/>; written only
+        /// when not 1) and whose gate is opened by <see cref="LearnedGateShift"/>.
+        /// </summary>
         public ModelFile ScaledModel(ModelFile model)
         {
             var copy = ModelFile.Parse(model.ToBytes(), model.Source + " (wearer " + Wearer + ")");
@@ -125,6 +140,7 @@ namespace HeadGait.Calibration
             }
             copy.AddTensor("input_mean", shape, mean, true);
             copy.AddTensor("input_scale", shape, scale, true);
+            if (LearnedTimeScale != 1) copy.Set(LearnedClassifier.WearerTimeScaleKey, LearnedTimeScale.ToString("R", CultureInfo.InvariantCulture));
             if (copy.Values.TryGetValue(WalkingGate.ModelKey, out var gateText))
                 copy.Set(WalkingGate.ModelKey, OpenGate(WalkingGate.Parse(gateText), LearnedGateShift).Serialize());
             return copy;
@@ -170,6 +186,7 @@ namespace HeadGait.Calibration
                 new KeyValuePair<string, string>("base_models", BaseModels ?? ""),
                 new KeyValuePair<string, string>("learned_gate_shift", LearnedGateShift.ToString("R", ci)),
                 new KeyValuePair<string, string>("learned_gain", LearnedGain.ToString("R", ci)),
+                new KeyValuePair<string, string>("learned_time_scale", LearnedTimeScale.ToString("R", ci)),
             };
             var sb = new StringBuilder(KeyValueText.Write(Magic, pairs, "a wearer's calibration (headgait calibrate); delete the file to reset the wearer to the shipped models"));
             if (Threshold != null) Embed(sb, ThrPrefix, Threshold.Serialize());
@@ -219,7 +236,8 @@ namespace HeadGait.Calibration
             var learned = new Dictionary<string, string>();
             string normalised = text.Replace("\r\n", "\n").Replace('\r', '\n');
             if (normalised.Length > 0 && normalised[0] == '\uFEFF') normalised = normalised.Substring(1);
-            string magic = normalised.TrimStart().StartsWith(MagicV1 + "\n", StringComparison.Ordinal) ? MagicV1 : Magic;
+            string head = normalised.TrimStart();
+            string magic = head.StartsWith(MagicV1 + "\n", StringComparison.Ordinal) ? MagicV1 : head.StartsWith(MagicV2 + "\n", StringComparison.Ordinal) ? MagicV2 : Magic;
             foreach (var raw in normalised.Split('\n'))
             {
                 string line = raw.Trim();
@@ -253,7 +271,9 @@ namespace HeadGait.Calibration
                 BaseModels = kv.Has("base_models") ? kv.Need("base_models") : "",
                 LearnedGateShift = kv.Number("learned_gate_shift", 0, MaxLearnedGateShift),
                 LearnedGain = kv.Number("learned_gain", MinLearnedGain, MaxLearnedGain),
+                LearnedTimeScale = magic == Magic ? kv.Number("learned_time_scale", MinLearnedTimeScale, MaxLearnedTimeScale) : 1,
             };
+            if (magic != Magic && kv.Has("learned_time_scale")) throw new FormatException($"{source}: 'learned_time_scale': a {(magic == MagicV1 ? "v1" : "v2")} profile holds no learned time scale");
             if (!DateTime.TryParse(kv.Need("created_utc"), CultureInfo.InvariantCulture, DateTimeStyles.AdjustToUniversal | DateTimeStyles.AssumeUniversal, out p.CreatedUtc))
                 throw new FormatException($"{source}: created_utc '{kv.Need("created_utc")}' is not a date and time");
             try
@@ -309,6 +329,7 @@ namespace HeadGait.Calibration
             if (Source != FromFootReferences && Source != SelfSupervised) throw new FormatException($"{source}: source '{Source}' is neither {FromFootReferences} nor {SelfSupervised}");
             if (!(LearnedGateShift >= 0 && LearnedGateShift <= MaxLearnedGateShift)) throw new FormatException($"{source}: learned_gate_shift {LearnedGateShift} is outside 0..{MaxLearnedGateShift}");
             if (!(LearnedGain >= MinLearnedGain && LearnedGain <= MaxLearnedGain)) throw new FormatException($"{source}: learned_gain {LearnedGain} is outside {MinLearnedGain}..{MaxLearnedGain}");
+            if (!(LearnedTimeScale >= MinLearnedTimeScale && LearnedTimeScale <= MaxLearnedTimeScale)) throw new FormatException($"{source}: learned_time_scale {LearnedTimeScale} is outside {MinLearnedTimeScale}..{MaxLearnedTimeScale}");
             var kinds = new HashSet<string>();
             foreach (var a in LearnedAdjustments ?? new List<LearnedAdjustment>())
             {

@@ -58,6 +58,38 @@ namespace HeadGait
         /// <summary>The samples changed: forget the rhythm read of the last fill.</summary>
         internal void Refilled() => HasRhythm = false;
 
+        /// <summary>
+        /// Fills this window with <paramref name="source"/>'s newest (<see cref="Length"/> - 1) x <paramref name="timeScale"/>
+        /// grid steps, linearly interpolated, its newest sample the source's newest: a stretch read <paramref name="timeScale"/>
+        /// times as fast (a learned model's wearer time scale). Before the source's oldest sample it reads that sample, and
+        /// <see cref="Count"/> says how many of this window's samples came from valid source samples.
+        /// </summary>
+        public void FillTimeScaled(SignalWindow source, double timeScale)
+        {
+            if (!(timeScale > 0)) throw new System.ArgumentOutOfRangeException(nameof(timeScale), "A time scale must be positive.");
+            int n = Length, last = source.Length - 1;
+            for (int j = 0; j < n; j++)
+            {
+                double x = last - (n - 1 - j) * timeScale;
+                int i = (int)System.Math.Floor(x);
+                double f = x - i;
+                if (i < 0)
+                {
+                    i = 0;
+                    f = 0;
+                }
+                int k = System.Math.Min(i + 1, last);
+                Smv[j] = source.Smv[i] + f * (source.Smv[k] - source.Smv[i]);
+                Lateral[j] = source.Lateral[i] + f * (source.Lateral[k] - source.Lateral[i]);
+                Forward[j] = source.Forward[i] + f * (source.Forward[k] - source.Forward[i]);
+                Vertical[j] = source.Vertical[i] + f * (source.Vertical[k] - source.Vertical[i]);
+            }
+            EndTime = source.EndTime;
+            EndIndex = source.EndIndex;
+            Count = System.Math.Max(0, System.Math.Min(n, (int)System.Math.Floor((System.Math.Min(source.Count, source.Length) - 1) / timeScale) + 1));
+            Refilled();
+        }
+
         public SignalWindow Clone()
         {
             var w = new SignalWindow(Length, SampleRate) { EndTime = EndTime, EndIndex = EndIndex, Count = Count };

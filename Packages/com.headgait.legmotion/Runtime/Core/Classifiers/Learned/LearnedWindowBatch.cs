@@ -12,8 +12,8 @@ namespace HeadGait
     {
         readonly LearnedClassifier classifier;
         readonly int width, outputCount;
-        double[] features = Array.Empty<double>(); // [window][time][channel]
-        double[] outputs = Array.Empty<double>();  // [window][output] (LearnedClassifier.OutputCount)
+        double[] features = Array.Empty<double>(); // [window][reading][time][channel] (LearnedClassifier.RowsPerWindow readings)
+        double[] outputs = Array.Empty<double>();  // [window][reading][output] (LearnedClassifier.WindowOutputCount)
         Entry[] entries = new Entry[16];
         int entryCount, windowCount;
         bool evaluated;
@@ -29,8 +29,8 @@ namespace HeadGait
         public LearnedWindowBatch(LearnedClassifier classifier)
         {
             this.classifier = classifier ?? throw new ArgumentNullException(nameof(classifier));
-            width = classifier.Features.Width;
-            outputCount = classifier.OutputCount;
+            width = classifier.WindowInputWidth;
+            outputCount = classifier.WindowOutputCount;
         }
 
         /// <summary>Windows and restarts queued, in order.</summary>
@@ -49,7 +49,7 @@ namespace HeadGait
                 Array.Resize(ref features, capacity * width);
                 Array.Resize(ref outputs, capacity * outputCount);
             }
-            Array.Copy(classifier.Standardise(window), 0, features, windowCount * width, width);
+            Array.Copy(classifier.StandardiseRows(window), 0, features, windowCount * width, width);
             Add(new Entry { Row = windowCount++, Time = window.EndTime, Reading = classifier.Read(window) });
         }
 
@@ -69,7 +69,7 @@ namespace HeadGait
         /// <summary>Scores every queued window in one call of the classifier's evaluator (none when no window is queued).</summary>
         public void Evaluate()
         {
-            if (windowCount > 0) classifier.Evaluator.Evaluate(features, windowCount, outputs);
+            if (windowCount > 0) classifier.Evaluator.Evaluate(features, windowCount * classifier.RowsPerWindow, outputs);
             evaluated = true;
         }
 

@@ -1,0 +1,184 @@
+using System;
+using System.Globalization;
+using System.Linq;
+using HeadGait.Synthetic;
+using HeadGait.Calibration;
+using NUnit.Framework;
+
+namespace HeadGait.Tests
+{
+    /// <summary>
+    /// A wearer's time scale for the learned models (<see cref="LearnedClassifier.TimeScale"/>, <see cref="WearerProfile.LearnedTimeScale"/>):
+    /// what the model reads at a scale, that 1 reads as ever, and the profile's field versioned and validated.
+    /// </summary>
+    public class LearnedTimeScaleTests
+    {
+        static GaitModels shipped;
+        static GaitModels Shipped => shipped ?? (shipped = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)));
+
+        /// <summary>A window of <paramref name="length"/> samples at 100 Hz of a bounce of period <paramref name="period"/> (s).</summary>
+        static SignalWindow Bounce(int length, double period)
+        {
+            var w = new SignalWindow(length, 100); // every sample valid
+            for (int i = 0; i < length; i++)
+            {
+                double t = -(length - 1 - i) / 100.0; // before the newest sample
+                w.Smv[i] = 2 * Math.Cos(2 * Math.PI * t / period);
+                w.Vertical[i] = 9.81 + 1.5 * Math.Cos(2 * Math.PI * t / period + 0.3);
+                w.Lateral[i] = 0.8 * Math.Sin(Math.PI * t / period);
+                w.Forward[i] = 0.5 * Math.Sin(2 * Math.PI * t / period + 1);
+            }
+            return w;
+        }
+
+        static ModelFile WithTimeScale(ModelFile model, string scale)
+        {
+            var copy = ModelFile.Parse(model.ToBytes(), "scaled.bytes");
+            copy.Set(LearnedClassifier.WearerTimeScaleKey, scale);
+            return copy;
+        }
+
+        [Test]
+        public void ASlowBounceReadAtItsTimeScaleLooksLikeTheQuickOne()
+        {
+            // A walker stepping every 0.7 s read at 0.7 / 0.5 = 1.4 gives the model the features a walker stepping every
+            // 0.5 s gives it unscaled (up to the linear interpolation between grid samples).
+            var svm = Shipped.Svm;
+            var plain = new SvmClassifier(svm, null);
+            var scaled = new SvmClassifier(WithTimeScale(svm, "1.4"), null);
+            Assert.That(plain.TimeScale, Is.EqualTo(1));
+            Assert.That(scaled.TimeScale, Is.EqualTo(1.4));
+            Assert.That(scaled.ModelSpan, Is.EqualTo((int)Math.Ceiling(99 * 1.4) + 1));
+            Assert.That(scaled.WindowLength, Is.GreaterThanOrEqualTo(scaled.ModelSpan));
+            var quick = new double[plain.Features.Width];
+            var slow = new double[plain.Features.Width];
+            var slowUnscaled = new double[plain.Features.Width];
+            plain.ReadFeatures(Bounce(250, 0.5), quick);
+            scaled.ReadFeatures(Bounce(250, 0.7), slow);
+            plain.ReadFeatures(Bounce(250, 0.7), slowUnscaled);
+            double Distance(double[] a, double[] b)
+            {
+                double d = 0;
+                for (int i = 0; i < a.Length; i++) d = Math.Max(d, Math.Abs(a[i] - b[i]));
+                return d;
+            }
+            Assert.That(Distance(slow, quick), Is.LessThan(0.02), "read at its scale the slow bounce is the quick one");
+            Assert.That(Distance(slowUnscaled, quick), Is.GreaterThan(1), "unscaled it is not");
+        }
+
+        [Test]
+        public void AScaleOfOneReadsTheWindowAsEver()
+        {
+            // Without the key, or a profile's scale of 1, nothing of the model or the window read changes.
+            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+            var profile = new WearerProfile { Wearer = "w" };
+            var applied = profile.Apply(models).Svm;
+            Assert.That(applied.Values.ContainsKey(LearnedClassifier.WearerTimeScaleKey), Is.False);
+            var a = new SvmClassifier(models.Svm, SvmClassifier.DefaultFilter());
+            var b = new SvmClassifier(applied, SvmClassifier.DefaultFilter());
+            Assert.That(b.WindowLength, Is.EqualTo(a.WindowLength));
+            var window = Bounce(a.WindowLength, 0.62);
+            Assert.That(b.Standardise(window), Is.EqualTo(a.Standardise(window)));
+            profile.LearnedTimeScale = 1.25;
+            Assert.That(profile.Apply(models).Svm.Values[LearnedClassifier.WearerTimeScaleKey], Is.EqualTo("1.25"));
+        }
+
+        [TestCase("3")]
+        [TestCase("0.1")]
+        [TestCase("NaN")]
+        [TestCase("fast")]
+        public void AModelsTimeScaleOutsideItsRangeIsRefusedNamingTheFile(string value)
+        {
+            var e = Assert.Throws<ModelFormatException>(() => new SvmClassifier(WithTimeScale(Shipped.Svm, value), null));
+            Assert.That(e.Message, Does.Contain("scaled.bytes").And.Contain(LearnedClassifier.WearerTimeScaleKey));
+        }
+
+        [Test]
+        public void AProfilesTimeScaleRoundTripsAndIsValidatedOnLoad()
+        {
+            var profile = new WearerProfile { Wearer = "slow-wearer", Steps = 40, LearnedTimeScale = 1.3 };
+            string text = profile.Serialize();
+            Assert.That(text, Does.StartWith(WearerProfile.Magic).And.Contain("learned_time_scale=1.3\n"));
+            var back = WearerProfile.Parse(text, "slow.profile.txt");
+            Assert.That(back.LearnedTimeScale, Is.EqualTo(1.3));
+            Assert.That(back.Serialize(), Is.EqualTo(text));
+
+            void Refused(string from, string to, string expected)
+            {
+                Assert.That(text, Does.Contain(from));
+                var e = Assert.Throws<FormatException>(() => WearerProfile.Parse(text.Replace(from, to), "slow.profile.txt"));
+                Assert.That(e.Message, Does.Contain("slow.profile.txt").And.Contain(expected));
+            }
+            Refused("learned_time_scale=1.3", "learned_time_scale=2.5", "learned_time_scale");
+            Refused("learned_time_scale=1.3", "learned_time_scale=0.2", "learned_time_scale");
+            Refused("learned_time_scale=1.3", "learned_time_scale=x", "learned_time_scale");
+            Refused("learned_time_scale=1.3\n", "", "lacks 'learned_time_scale'");
+            // A v2 profile (before the scale) reads with the window as it is; one that claims a scale is refused.
+            string v2 = text.Replace(WearerProfile.Magic, WearerProfile.MagicV2).Replace("learned_time_scale=1.3\n", "");
+            var old = WearerProfile.Parse(v2, "old.profile.txt");
+            Assert.That(old.LearnedTimeScale, Is.EqualTo(1));
+            Refused(WearerProfile.Magic, WearerProfile.MagicV2, "v2 profile holds no learned time scale");
+            // The bounds a profile may hold lie within what a model may.
+            Assert.That(WearerProfile.MinLearnedTimeScale, Is.GreaterThanOrEqualTo(LearnedClassifier.MinTimeScale));
+            Assert.That(WearerProfile.MaxLearnedTimeScale, Is.LessThanOrEqualTo(LearnedClassifier.MaxTimeScale));
+            Assert.That(profile.LearnedTimeScale.ToString(CultureInfo.InvariantCulture), Is.EqualTo("1.3"));
+        }
+
+        static (Recording walk, Recording other, GaitSubject wearer) QuickAndSlow(double stepFrequency, ulong seed)
+        {
+            var wearer = GaitSubject.Random(seed, "wearer" + seed);
+            wearer.StepFrequency = stepFrequency;
+            var walk = WalkingStreamGenerator.Generate("calibration", wearer, new StreamScript().Stand(2).Walk(30, Foot.Left).Stand(1).Walk(30, Foot.Right, 40).Stand(3), 84);
+            var other = WalkingStreamGenerator.Generate("other-walk", wearer, new StreamScript().Stand(2).Walk(25, Foot.Right).Stand(1).Walk(25, Foot.Left, -30).Stand(2), 911);
+            return (walk, other, wearer);
+        }
+
+        static WearerProfile Fitted(Recording walk, GaitModels models, AdaptationSettings settings)
+        {
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var session = new CalibrationSession(CalibrationTests.Unlabelled(walk), left, right);
+            return WearerAdaptation.Fit(models, new[] { session.Labelled() }, "wearer", WearerProfile.FromFootReferences, settings);
+        }
+
+        [Test]
+        public void AQuickWalkersModelsReadTheirWalkAtTheTrainingWalkersStepAndClassifyTheirOtherWalkBetter()
+        {
+            // A generated wearer stepping 2.4 times a second (0.42 s a step; the training walkers take about 0.54 s): the
+            // calibration reads the SVM's window at the ratio of the two, and the wearer's other walk is classified better
+            // than by the same profile reading the window as it is; their standing with head movement is shown as walking
+            // no more than by the shipped models.
+            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+            var (walk, other, wearer) = QuickAndSlow(2.4, 31);
+            var profile = Fitted(walk, models, new AdaptationSettings());
+            Assert.That(AdaptationSettings.For(WearerProfile.SelfSupervised).LearnedTimeScale, Is.False, "self-supervised profiles read the window as it is");
+            double trainedStep = models.SvmOf(models.Svm).PhaseMap.ReferenceStridePeriod / 2;
+            Assert.That(profile.LearnedTimeScale, Is.LessThan(1).And.EqualTo(WearerAdaptation.StepPeriod(new[] { walk }) / trainedStep).Within(0.01));
+            var unscaled = WearerProfile.Parse(profile.Serialize());
+            unscaled.LearnedTimeScale = 1;
+            double Misclassified(WearerProfile p, Recording r) => ReplayEvaluator.Run(r, p.Apply(models).Create("svm", out _)).ClassifierMetrics.MisclassificationRate;
+            double scaled = Misclassified(profile, other), plain = Misclassified(unscaled, other);
+            double shipped = ReplayEvaluator.Run(other, models.Create("svm", out _)).ClassifierMetrics.MisclassificationRate;
+            TestContext.WriteLine($"time scale {profile.LearnedTimeScale:F3}: other walk {scaled:P1} scaled, {plain:P1} unscaled, {shipped:P1} shipped");
+            Assert.That(scaled, Is.LessThan(plain - 0.01), $"scaled {scaled:P1}, unscaled {plain:P1}, shipped {shipped:P1}");
+
+            var standing = Enumerable.Range(0, 3).Select(k => WalkingStreamGenerator.Generate("stand" + k, wearer, new StreamScript().Stand(20, 0.5 + 0.5 * k), 500UL + (ulong)k)).ToList();
+            double Shown(GaitModels m) => GaitMetrics.Pool(standing.Select(r => ReplayEvaluator.Run(r, m.Create("svm", out _)).ClassifierMetrics)).StandingAsWalking;
+            TestContext.WriteLine($"standing shown walking: scaled {Shown(profile.Apply(models)):P2}, unscaled {Shown(unscaled.Apply(models)):P2}, shipped {Shown(models):P2}");
+            Assert.That(Shown(profile.Apply(models)), Is.LessThanOrEqualTo(Shown(models)));
+        }
+
+        [Test]
+        public void ASlowWalkersModelsReadTheirWindowAsItIs()
+        {
+            // Slower than the training walkers (0.71 s a step): training stretched its walks that far already, and reading
+            // such wearers quicker cost every slow style held out, so the profile keeps the window as it is; with
+            // AdaptationSettings.LearnedTimeScaleUpward it would read it slower.
+            var models = new GaitModels { Threshold = Shipped.Threshold, Correlation = Shipped.Correlation, Svm = Shipped.Svm };
+            var (walk, _, _) = QuickAndSlow(1.4, 32);
+            var settings = new AdaptationSettings { LearnedRefit = false };
+            Assert.That(Fitted(walk, models, settings).LearnedTimeScale, Is.EqualTo(1));
+            settings.LearnedTimeScaleUpward = true;
+            Assert.That(Fitted(walk, models, settings).LearnedTimeScale, Is.GreaterThan(1.2));
+        }
+    }
+}
