@@ -840,7 +840,8 @@ namespace HeadGait.Tests
         public void ASlowerWalkRidesOutTheGateForLonger()
         {
             // A slow walker's head lies still between steps for longer: the gate-refusal counts stretch with the step period
-            // beyond StillWindowsStepPeriod (THR: the typical step), and hold at the typical step or faster; COR's hold at any pace.
+            // beyond StillWindowsStepPeriod (the typical step), and hold at the typical step or faster; COR's only once its walk's
+            // contacts span StillWindowsAfterWalked (and while the head's tilt holds, StillWindowsMaxTiltChange).
             var thr = new ThresholdSettings().Clock;
             int established = thr.StopAfterStillWindowsAfter(thr.EstablishedAfter);
             Assert.That(thr.StopAfterStillWindowsAfter(thr.EstablishedAfter, StepClockSettings.TypicalStepPeriod), Is.EqualTo(established));
@@ -850,8 +851,15 @@ namespace HeadGait.Tests
             Assert.That(thr.ContactAllowed(false, true, thr.ContactWhileStillWindows + 2, 0.9), Is.True, "a contact of a walk stepping at 0.9 s");
             Assert.That(thr.ContactAllowed(false, false, 0, 0.9), Is.False, "no walk under way");
             var cor = new CorrelationSettings().Clock;
-            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, 0.91), Is.EqualTo(cor.StopAfterStillWindows), "COR as before");
-            Assert.That(cor.ContactAllowed(false, true, cor.ContactWhileStillWindows, 0.91), Is.False, "COR as before");
+            cor.ContactsToStart = 1;
+            var clock = new StepClock(PhaseMap.Perry, cor);
+            clock.Contact(0, 1);
+            clock.Contact(0.8, -1);
+            Assert.That(clock.RefusalStepPeriod, Is.EqualTo(0), "a young walk: COR's counts as at the typical step");
+            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, clock.RefusalStepPeriod), Is.EqualTo(cor.StopAfterStillWindows));
+            clock.Contact(1.6, 1);
+            Assert.That(clock.RefusalStepPeriod, Is.EqualTo(clock.StepPeriod), "contacts spanning 0.85 s and more");
+            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, clock.RefusalStepPeriod), Is.GreaterThan(cor.StopAfterStillWindows));
         }
 
         [Test]

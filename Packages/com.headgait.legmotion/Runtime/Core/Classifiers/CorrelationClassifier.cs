@@ -273,6 +273,12 @@ namespace HeadGait
         /// </summary>
         public event Action<double, double, double, int> ContactDetected;
 
+        /// <summary>
+        /// Raised with the time of the last contact taken when a stronger match takes its place (<see cref="CorrelationSettings.ReplaceMargin"/>),
+        /// just before <see cref="ContactDetected"/> reports the new one: whoever lists the contacts drops it.
+        /// </summary>
+        public event Action<double> ContactWithdrawn;
+
         public void Reset()
         {
             clock.Reset();
@@ -365,7 +371,11 @@ namespace HeadGait
                 bool taken = peak && clock.Contact(contact, recentEvidence[centre]);
                 // A full match too soon after a weaker contact to be a step of its own: that one was a bump of this step.
                 if (!taken && peak && settings.ReplaceMargin >= 0 && r >= minCorrelation && r >= lastContactR + settings.ReplaceMargin)
+                {
+                    double withdrawn = clock.LastContactTime;
                     taken = clock.ReplaceLastContact(contact, recentEvidence[centre]);
+                    if (taken) ContactWithdrawn?.Invoke(withdrawn);
+                }
                 if (taken)
                 {
                     lastContactR = r;
@@ -645,6 +655,7 @@ namespace HeadGait
                 var detections = new List<(double time, double r, int template, double bounce)>();
                 var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });
                 cor.ContactDetected += (t, e, r, k) => detections.Add((t, r, k, cor.WalkBounce));
+                cor.ContactWithdrawn += t => detections.RemoveAll(d => d.time == t);
                 foreach (var s in rec.Samples) pre.Push(s.Imu, w => cor.Classify(w));
                 var contacts = PhaseEvents.TruthContacts(rec);
                 foreach (var d in detections) onContact(PhaseEvents.OffsetFromNearest(contacts, d.time), d.r, d.template, d.bounce);
