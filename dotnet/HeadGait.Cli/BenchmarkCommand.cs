@@ -33,16 +33,17 @@ namespace HeadGait.Cli
             var sensorRate = new Option<double?>("--sensor-rate") { Description = "also score each held-out clip as a sensor sampling at this many Hz gives it (e.g. 50: the preprocessor resamples it to 100 Hz)" };
             var startStop = new Option<bool>("--start-stop") { Description = "also score each held-out walking clip made into a walk that starts and stops (standing, the walk growing in from a toe-off and fading out to a contact, standing): how late each classifier starts and stops on people's steps" };
             var real = new Option<string[]>("--real") { Description = "unlabelled real recordings with '# activity=' headers that every fold's walking gates also learn from, as `train --real` (e.g. ../shared/data/glasses-train)", AllowMultipleArgumentsPerToken = true };
+            var cache = new Option<string>("--fold-cache") { Description = "keep each fold's THR and COR here and reuse them (delete it when training, --real or --augment changes; THR's and COR's runtime settings are read at scoring)" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
-                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, sensorRate, startStop, real,
+                data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, sensorRate, startStop, real, cache,
             };
             command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(models), parse.GetValue(cvModels) ?? TrainCommand.DefaultCvModels(),
-                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(jolted), parse.GetValue(sensorRate), parse.GetValue(startStop), parse.GetValue(real)));
+                parse.GetValue(cv), parse.GetValue(classifier), parse.GetValue(augment), parse.GetValue(perFold), parse.GetValue(pose), parse.GetValue(perRecording), parse.GetValue(earLike), parse.GetValue(slow), parse.GetValue(tilted), parse.GetValue(turned), parse.GetValue(jolted), parse.GetValue(sensorRate), parse.GetValue(startStop), parse.GetValue(real), parse.GetValue(cache)));
             return command;
         }
 
-        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool jolted, double? sensorRate, bool startStop, string[] realPaths)
+        static int Run(string[] data, string modelFolder, string cvFolder, string schemes, string classifierList, int augment, bool perFold, string[] posePaths, string perRecordingCsv, bool earLike, bool slow, bool tilted, bool turned, bool jolted, double? sensorRate, bool startStop, string[] realPaths, string cache)
         {
             // Held-out clips changed as a real sensor or walk might differ from these recordings: each is scored by the same fold's classifiers.
             var variants = new List<(string Label, string Caption, Func<Recording, Recording> Make)>();
@@ -90,7 +91,9 @@ namespace HeadGait.Cli
                     var variantTests = variants.Select(v => test.Select(v.Make).Where(r => r != null).ToList()).ToList();
                     var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
                     if (train.Count == 0 || test.Count == 0) continue;
-                    var (foldModels, gates, map) = TrainFold(train, augment, names.Contains("thr"), names.Contains("cor"), realGateWindows);
+                    var (foldModels, gates, map) = cache == null
+                        ? TrainFold(train, augment, names.Contains("thr"), names.Contains("cor"), realGateWindows)
+                        : CachedFold(Path.Combine(cache, scheme, TrainCommand.Safe(fold.Name)), () => TrainFold(train, augment, true, true, realGateWindows));
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
                     foldModels.Svm = learned?.Svm;
@@ -186,6 +189,31 @@ namespace HeadGait.Cli
             if (thr) models.Threshold = GaitTraining.TrainThreshold(augmented, map, gates.Threshold);
             if (cor) models.Correlation = GaitTraining.TrainCorrelation(augmented, map, gates.Correlation);
             return (models, gates, map);
+        }
+
+        /// <summary>
+        /// A fold's THR and COR, gates and phase map from <paramref name="dir"/> when it holds them, else trained by
+        /// <paramref name="train"/> (THR and COR both) and kept there: the runs that change only how the classifiers run
+        /// score the same fold models without training them again.
+        /// </summary>
+        internal static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) CachedFold(
+            string dir, Func<(GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map)> train)
+        {
+            string gateFile = Path.Combine(dir, "learned-gate.txt"), mapFile = Path.Combine(dir, "phase-map.txt");
+            if (File.Exists(Path.Combine(dir, GaitModels.ThresholdFile)) && File.Exists(Path.Combine(dir, GaitModels.CorrelationFile)) && File.Exists(gateFile) && File.Exists(mapFile))
+            {
+                var cached = GaitModels.Load(dir);
+                string gateText = File.ReadAllText(gateFile).Trim();
+                var learnedGate = gateText.Length == 0 ? null : WalkingGate.Parse(gateText);
+                return (cached, (cached.Threshold.Gate, cached.Correlation.Gate, learnedGate), PhaseMap.Parse(File.ReadAllText(mapFile).Trim()));
+            }
+            var trained = train();
+            Directory.CreateDirectory(dir);
+            trained.Models.Threshold.Save(Path.Combine(dir, GaitModels.ThresholdFile));
+            trained.Models.Correlation.Save(Path.Combine(dir, GaitModels.CorrelationFile));
+            File.WriteAllText(gateFile, trained.Gates.Learned?.Serialize() ?? "");
+            File.WriteAllText(mapFile, trained.Map.Serialize());
+            return trained;
         }
 
         /// <summary>A learned classifier with the fold's own gate and stance slope (fold models may predate them or hold ones from other data).</summary>

@@ -285,27 +285,8 @@ namespace HeadGait.Cli
 
         /// <summary>THR and COR trained on the fold's training styles, with the fold's gates and phase map (from the cache when it holds them).</summary>
         static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) FoldModels(Fold fold, List<Recording> train, int augment, string cache)
-        {
-            string dir = cache == null ? null : Path.Combine(cache, TrainCommand.Safe(fold.Name));
-            string gateFile = dir == null ? null : Path.Combine(dir, "learned-gate.txt"), mapFile = dir == null ? null : Path.Combine(dir, "phase-map.txt");
-            if (dir != null && File.Exists(Path.Combine(dir, GaitModels.ThresholdFile)) && File.Exists(Path.Combine(dir, GaitModels.CorrelationFile)) && File.Exists(gateFile) && File.Exists(mapFile))
-            {
-                var cached = GaitModels.Load(dir);
-                string gateText = File.ReadAllText(gateFile).Trim();
-                var learnedGate = gateText.Length == 0 ? null : WalkingGate.Parse(gateText);
-                return (cached, (cached.Threshold.Gate, cached.Correlation.Gate, learnedGate), PhaseMap.Parse(File.ReadAllText(mapFile).Trim()));
-            }
-            var trained = BenchmarkCommand.TrainFold(train, augment, true, true);
-            if (dir != null)
-            {
-                Directory.CreateDirectory(dir);
-                trained.Models.Threshold.Save(Path.Combine(dir, GaitModels.ThresholdFile));
-                trained.Models.Correlation.Save(Path.Combine(dir, GaitModels.CorrelationFile));
-                File.WriteAllText(gateFile, trained.Gates.Learned?.Serialize() ?? "");
-                File.WriteAllText(mapFile, trained.Map.Serialize());
-            }
-            return trained;
-        }
+            => cache == null ? BenchmarkCommand.TrainFold(train, augment, true, true)
+                : BenchmarkCommand.CachedFold(Path.Combine(cache, TrainCommand.Safe(fold.Name)), () => BenchmarkCommand.TrainFold(train, augment, true, true));
 
         static void Print(Dictionary<(string style, string clf, string variant), Cell> cells, Dictionary<string, double> cadence, List<string> names)
         {

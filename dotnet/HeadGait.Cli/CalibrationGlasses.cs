@@ -126,7 +126,7 @@ namespace HeadGait.Cli
         /// <summary>Why a walk gave too few sure steps: how many contacts COR (gate open) found in it and how far apart.</summary>
         static string ContactRhythm(GaitModels models, Recording walk)
         {
-            var cor = new CorrelationClassifier(models.Correlation.With(gate: WalkingGate.Open));
+            var cor = new CorrelationClassifier(models.Correlation.With(gate: WalkingGate.Open), WearerAdaptation.SelfLabelSettings);
             var times = new List<double>();
             cor.ContactDetected += (t, e, r, k) => times.Add(t);
             var pre = new StreamPreprocessor(new PreprocessorSettings { History = cor.WindowLength });

@@ -497,10 +497,76 @@ namespace HeadGait.Tests
             Assert.That(tracking.contacts, Is.GreaterThan(strict.contacts + 10), "steps that come when due are taken");
             Assert.That(tracking.recall, Is.GreaterThan(strict.recall));
         }
+
+        static GaitModels Shipped => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+
+        static Recording RealClip(string name)
+        {
+            string file = System.IO.Path.Combine(TestData.SharedData("real-train"), name + ".csv");
+            if (!System.IO.File.Exists(file)) Assert.Ignore($"{file} not found");
+            return RecordingCsv.Load(file);
+        }
+
+        [Test]
+        public void AStepsFullMatchTakesThePlaceOfAnEarlierBumpOfIt()
+        {
+            // A recorded calm walker turning (Bandai Namco *feminine*): a weak peak on a bump of a step was taken as its contact,
+            // and the step's own full match, too soon after it to be a step, was refused; the stride ran early (69.9 % wrong).
+            // The full match now takes the bump's place (CorrelationSettings.ReplaceMargin).
+            var template = Shipped.Correlation;
+            var rec = RealClip("bn_tr_fem_001");
+            double Wrong(double margin) => ReplayEvaluator.Run(rec, new CorrelationClassifier(template, new CorrelationSettings { ReplaceMargin = margin })).ClassifierMetrics.MisclassificationRate;
+            double replaced = Wrong(new CorrelationSettings().ReplaceMargin), kept = Wrong(-1);
+            Assert.That(replaced, Is.LessThan(0.6));
+            Assert.That(replaced, Is.LessThan(kept - 0.1));
+        }
+
+        [Test]
+        public void ASlowCalmWalkGoesOnThroughTheGatesLongerRefusalsButAGesturesFalseWalkDoesNot()
+        {
+            // A recorded turn (*masculine*) made slow and calm (the benchmark's --slow): the gate refuses for longer than 0.15 s
+            // between its steps of about 0.9 s, and COR ended the walk there (57.8 % wrong). Its refusal counts now stretch with
+            // the step period while the head's tilt holds and once the walk's contacts span 0.85 s.
+            var template = Shipped.Correlation;
+            var slow = Training.RecordingAugmentation.Slow(RealClip("bn_tr_mas_008"));
+            var shipped = new CorrelationSettings();
+            var unstretched = new CorrelationSettings();
+            unstretched.Clock.StillWindowsStepPeriod = 0;
+            double wrong = ReplayEvaluator.Run(slow, new CorrelationClassifier(template, shipped)).ClassifierMetrics.MisclassificationRate;
+            Assert.That(wrong, Is.LessThan(0.4));
+            Assert.That(wrong, Is.LessThan(ReplayEvaluator.Run(slow, new CorrelationClassifier(template, unstretched)).ClassifierMetrics.MisclassificationRate - 0.1));
+            // Gestures and bows (the same style's, and the waves whose false walks a stretch from the first contact showed longer)
+            // are shown as walking no more than without the stretch.
+            var gestures = new[] { "bn_neg_rb_mas_001", "bn_neg_rr_mas_001", "bn_neg_wb_mas_001", "bn_neg_wl_mas_001", "bn1_guide_active_001", "bn1_byebye_active_001" }.Select(RealClip).ToList();
+            double Shown(CorrelationSettings s) => GaitMetrics.Pool(gestures.Select(r => ReplayEvaluator.Run(r, new CorrelationClassifier(template, s)).ClassifierMetrics)).StandingAsWalking;
+            Assert.That(Shown(shipped), Is.LessThanOrEqualTo(Shown(unstretched)));
+        }
     }
 
     public class StepClockTests
     {
+        [Test]
+        public void AContactReplacingTheLastOneLeavesTheClockAsIfTheLastHadNeverCome()
+        {
+            var settings = new StepClockSettings { ContactsToStart = 1 };
+            var direct = new StepClock(PhaseMap.Perry, settings);
+            direct.Contact(0, 1);
+            direct.Contact(0.9, -1);
+            direct.Contact(1.85, 1);
+            var bumped = new StepClock(PhaseMap.Perry, settings);
+            bumped.Contact(0, 1);
+            bumped.Contact(0.9, -1);
+            Assert.That(bumped.Contact(1.5, -1), Is.True, "a bump taken as a contact");
+            Assert.That(bumped.Contact(1.85, 1), Is.False, "too soon after it");
+            Assert.That(bumped.ReplaceLastContact(1.85, 1), Is.True);
+            Assert.That(bumped.LastContactTime, Is.EqualTo(direct.LastContactTime));
+            Assert.That(bumped.StepPeriod, Is.EqualTo(direct.StepPeriod));
+            Assert.That(bumped.LastFoot, Is.EqualTo(direct.LastFoot));
+            Assert.That(bumped.StridePosition(2.0), Is.EqualTo(direct.StridePosition(2.0)));
+            bumped.Stop();
+            Assert.That(bumped.ReplaceLastContact(2.5, 1), Is.False, "nothing to replace after a stop");
+        }
+
         [Test]
         public void ABouncierWalkerLeadsTheStridePositionByTheSlopeWithinItsLimit()
         {
@@ -774,7 +840,8 @@ namespace HeadGait.Tests
         public void ASlowerWalkRidesOutTheGateForLonger()
         {
             // A slow walker's head lies still between steps for longer: the gate-refusal counts stretch with the step period
-            // beyond StillWindowsStepPeriod (THR: the typical step), and hold at the typical step or faster; COR's hold at any pace.
+            // beyond StillWindowsStepPeriod (the typical step), and hold at the typical step or faster; COR's only once its walk's
+            // contacts span StillWindowsAfterWalked (and while the head's tilt holds, StillWindowsMaxTiltChange).
             var thr = new ThresholdSettings().Clock;
             int established = thr.StopAfterStillWindowsAfter(thr.EstablishedAfter);
             Assert.That(thr.StopAfterStillWindowsAfter(thr.EstablishedAfter, StepClockSettings.TypicalStepPeriod), Is.EqualTo(established));
@@ -784,8 +851,15 @@ namespace HeadGait.Tests
             Assert.That(thr.ContactAllowed(false, true, thr.ContactWhileStillWindows + 2, 0.9), Is.True, "a contact of a walk stepping at 0.9 s");
             Assert.That(thr.ContactAllowed(false, false, 0, 0.9), Is.False, "no walk under way");
             var cor = new CorrelationSettings().Clock;
-            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, 0.91), Is.EqualTo(cor.StopAfterStillWindows), "COR as before");
-            Assert.That(cor.ContactAllowed(false, true, cor.ContactWhileStillWindows, 0.91), Is.False, "COR as before");
+            cor.ContactsToStart = 1;
+            var clock = new StepClock(PhaseMap.Perry, cor);
+            clock.Contact(0, 1);
+            clock.Contact(0.8, -1);
+            Assert.That(clock.RefusalStepPeriod, Is.EqualTo(0), "a young walk: COR's counts as at the typical step");
+            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, clock.RefusalStepPeriod), Is.EqualTo(cor.StopAfterStillWindows));
+            clock.Contact(1.6, 1);
+            Assert.That(clock.RefusalStepPeriod, Is.EqualTo(clock.StepPeriod), "contacts spanning 0.85 s and more");
+            Assert.That(cor.StopAfterStillWindowsAfter(double.NaN, clock.RefusalStepPeriod), Is.GreaterThan(cor.StopAfterStillWindows));
         }
 
         [Test]

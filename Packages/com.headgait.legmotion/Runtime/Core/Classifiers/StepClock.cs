@@ -232,6 +232,21 @@ namespace HeadGait
         /// </summary>
         public double StillWindowsStepPeriod = TypicalStepPeriod;
 
+        /// <summary>
+        /// Most the head's tilt may have moved over the newest <see cref="HeadTilt.Span"/> seconds (degrees) for the
+        /// gate-refusal counts to stretch with the step period (<see cref="StillWindowsStepPeriod"/>; <see cref="StepClock.RefusalStepPeriod"/>):
+        /// a walker stepping slowly and calmly holds the head's tilt, one who bends down to pick something up does not.
+        /// 0: they stretch whatever the tilt. COR sets 10 (<see cref="CorrelationSettings.Clock"/>).
+        /// </summary>
+        public double StillWindowsMaxTiltChange = 0;
+
+        /// <summary>
+        /// Seconds from a walk's first contact to its last before its gate-refusal counts stretch with the step period
+        /// (<see cref="StillWindowsStepPeriod"/>): the false walks of a waving or gesturing head are young, and stretched they
+        /// were shown for longer. 0: from its first contact. COR sets 0.85 (<see cref="CorrelationSettings.Clock"/>).
+        /// </summary>
+        public double StillWindowsAfterWalked = 0;
+
         /// <summary><paramref name="windows"/> stretched for a walk stepping at <paramref name="stepPeriod"/> (<see cref="StillWindowsStepPeriod"/>).</summary>
         int ForStep(int windows, double stepPeriod)
             => StillWindowsStepPeriod > 0 && stepPeriod > StillWindowsStepPeriod ? (int)Math.Round(windows * stepPeriod / StillWindowsStepPeriod) : windows;
@@ -318,6 +333,7 @@ namespace HeadGait
         double period;
         double sideEvidence;
         int contactsInBout;
+        double boutStart = double.NaN; // the walk's first contact (or start); StillWindowsAfterWalked counts from it
         bool periodMeasured;
         Foot lastFoot;
         double reported = double.NaN; // the stride position last predicted; NaN after standing
@@ -372,7 +388,17 @@ namespace HeadGait
             firstSeen = double.NaN;
             tiltMoved = double.NegativeInfinity;
             lastGateScore = double.NegativeInfinity;
+            beforeLastContact = null;
+            boutStart = double.NaN;
         }
+
+        /// <summary>
+        /// The step period (s) the gate-refusal counts stretch for (<see cref="StepClockSettings.StillWindowsStepPeriod"/>):
+        /// the walk's, or 0 (no stretch) while the head's tilt moves more than <see cref="StepClockSettings.StillWindowsMaxTiltChange"/>
+        /// or the walk's contacts span less than <see cref="StepClockSettings.StillWindowsAfterWalked"/>.
+        /// </summary>
+        public double RefusalStepPeriod
+            => settings.StillWindowsMaxTiltChange > 0 && tilt.Change > settings.StillWindowsMaxTiltChange || !(lastContact - boutStart >= settings.StillWindowsAfterWalked) ? 0 : period;
 
         /// <summary>The step period (s) the head's rhythm showed at its last reading; 0 when it showed none.</summary>
         public double RhythmPeriod => rhythmPeriod;
@@ -477,6 +503,72 @@ namespace HeadGait
         /// </summary>
         public bool Contact(double time, double leftEvidence)
         {
+            var before = Save();
+            bool taken = TakeContact(time, leftEvidence);
+            if (taken) beforeLastContact = before;
+            return taken;
+        }
+
+        /// <summary>
+        /// The last contact taken was a bump of the step whose contact is at <paramref name="time"/>, which came too soon
+        /// after it to count (<see cref="Contact"/> refused it): the clock forgets the last contact (its period, side and
+        /// counts as before it) and takes this one in its place. False, the clock as it was, when there is none to forget
+        /// (none since the last start or stop) or this one is not taken either.
+        /// </summary>
+        public bool ReplaceLastContact(double time, double leftEvidence)
+        {
+            if (!beforeLastContact.HasValue || !(lastContact > beforeLastContact.Value.LastContact)) return false;
+            var after = Save();
+            var before = beforeLastContact.Value;
+            Restore(before);
+            if (TakeContact(time, leftEvidence))
+            {
+                beforeLastContact = before;
+                return true;
+            }
+            Restore(after);
+            return false;
+        }
+
+        readonly struct State
+        {
+            public readonly double LastContact, Period, SideEvidence, BoutStart;
+            public readonly int ContactsInBout, HiddenContacts;
+            public readonly bool PeriodMeasured;
+            public readonly Foot LastFoot;
+
+            public State(double lastContact, double period, double sideEvidence, double boutStart, int contactsInBout, int hiddenContacts, bool periodMeasured, Foot lastFoot)
+            {
+                LastContact = lastContact;
+                Period = period;
+                SideEvidence = sideEvidence;
+                BoutStart = boutStart;
+                ContactsInBout = contactsInBout;
+                HiddenContacts = hiddenContacts;
+                PeriodMeasured = periodMeasured;
+                LastFoot = lastFoot;
+            }
+        }
+
+        State? beforeLastContact; // the clock before the last contact it took (ReplaceLastContact); null after a start, a stop or Reset
+
+        State Save() => new State(lastContact, period, sideEvidence, boutStart, contactsInBout, hiddenContacts, periodMeasured, lastFoot);
+
+        void Restore(State s)
+        {
+            lastContact = s.LastContact;
+            period = s.Period;
+            sideEvidence = s.SideEvidence;
+            boutStart = s.BoutStart;
+            contactsInBout = s.ContactsInBout;
+            hiddenContacts = s.HiddenContacts;
+            periodMeasured = s.PeriodMeasured;
+            lastFoot = s.LastFoot;
+        }
+
+        /// <summary><see cref="Contact"/> without remembering the clock before it.</summary>
+        bool TakeContact(double time, double leftEvidence)
+        {
             double interval = time - lastContact;
             if (interval < settings.MinStepInterval) return false;
             if (periodMeasured && interval < settings.MinStepShare * period) return false;
@@ -509,7 +601,7 @@ namespace HeadGait
                 // one being the same side (or for it).
                 sideEvidence = leftEvidence + (steps % 2 == 1 ? -1 : 1) * settings.SideMemory * sideEvidence;
             }
-            if (contactsInBout == 1) hiddenContacts = ContactsHidden(time);
+            if (contactsInBout == 1) { hiddenContacts = ContactsHidden(time); boutStart = time; }
             lastFoot = sideEvidence >= 0 ? Foot.Left : Foot.Right;
             lastContact = time;
             return true;
@@ -521,7 +613,9 @@ namespace HeadGait
         /// </summary>
         public void Start(double contactTime, double leftEvidence, double stepPeriod)
         {
+            beforeLastContact = null;
             hiddenContacts = ContactsHidden(contactTime);
+            if (contactsInBout == 0) boutStart = contactTime;
             lastContact = contactTime;
             sideEvidence = leftEvidence;
             lastFoot = leftEvidence >= 0 ? Foot.Left : Foot.Right;
@@ -533,6 +627,7 @@ namespace HeadGait
         /// <summary>Ends the walking bout now (the head has stopped moving like walking): the next contact starts a new one.</summary>
         public void Stop()
         {
+            beforeLastContact = null;
             firstStep.Reset();
             contactsInBout = 0;
             periodMeasured = false;
