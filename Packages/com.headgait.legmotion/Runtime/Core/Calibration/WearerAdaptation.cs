@@ -137,6 +137,15 @@ namespace HeadGait.Calibration
         /// </summary>
         public double ShortWalkMargin = 0.05;
         /// <summary>
+        /// On a walk of <see cref="CorThresholdSteps"/> or more, a COR candidate must beat the trained COR on the walk by this
+        /// much (misclassification), at least <see cref="AcceptMargin"/>. With ankle trackers at half a point, bn *masculine*'s
+        /// refitted candidate (its own step, lead 0.010 s) paid on its minute's walk by a hair once the fold COR's clock lead
+        /// moved a little (COR's replaced contacts, 2026-11-26) and scored its other walks 15.7 to 18.6 %; at a point it is not
+        /// kept, and every other style's gain stays (pooled 21.4 to 19.1 % at half a point, 18.3 % at a point). The learned
+        /// models keep half a point: at a point the SVM's bn1 *active* lost its gain (24.4 to 28.6 %).
+        /// </summary>
+        public double CorAcceptMargin = 0.01;
+        /// <summary>
         /// Mean steps the wearer's own steps make on a walk of <see cref="CorThresholdSteps"/> or more (clustered as training
         /// clusters; a shorter walk makes one), added in front of the trained ones. With ankle trackers, held-out (in-sample
         /// as a choice among 1-3, added or in place of the trained ones): a minute's straight walks and turns gave bn
@@ -357,7 +366,7 @@ namespace HeadGait.Calibration
             }
             if (candidates.Count == 0) return shipped;
             if (double.IsNaN(a.AcceptMargin)) return candidates[candidates.Count - 1];
-            double margin = steps < a.CorThresholdSteps && !double.IsNaN(a.ShortWalkMargin) ? Math.Max(a.AcceptMargin, a.ShortWalkMargin) : a.AcceptMargin;
+            double margin = Math.Max(a.AcceptMargin, steps < a.CorThresholdSteps && !double.IsNaN(a.ShortWalkMargin) ? a.ShortWalkMargin : a.CorAcceptMargin);
             double trained = Misclassification(() => new CorrelationClassifier(shipped), walk);
             var chosen = shipped;
             double best = trained - margin;
