@@ -33,7 +33,7 @@ namespace HeadGait.Cli
             var sensorRate = new Option<double?>("--sensor-rate") { Description = "also score each held-out clip as a sensor sampling at this many Hz gives it (e.g. 50: the preprocessor resamples it to 100 Hz)" };
             var startStop = new Option<bool>("--start-stop") { Description = "also score each held-out walking clip made into a walk that starts and stops (standing, the walk growing in from a toe-off and fading out to a contact, standing): how late each classifier starts and stops on people's steps" };
             var real = new Option<string[]>("--real") { Description = "unlabelled real recordings with '# activity=' headers that every fold's walking gates also learn from, as `train --real` (e.g. ../shared/data/glasses-train)", AllowMultipleArgumentsPerToken = true };
-            var cache = new Option<string>("--fold-cache") { Description = "keep each fold's THR and COR here and reuse them (delete it when training, --real or --augment changes; THR's and COR's runtime settings are read at scoring)" };
+            var cache = new Option<string>("--fold-cache") { Description = "keep each fold's THR and COR here and reuse them while this build and the same --augment and --real trained them (else trained again); THR's and COR's runtime settings are read at scoring" };
             var command = new Command("benchmark", "Cross-validates all four classifiers on labelled recordings and prints accuracy, step timing and CPU cost.")
             {
                 data, models, cvModels, cv, classifier, augment, perFold, pose, perRecording, earLike, slow, tilted, turned, jolted, sensorRate, startStop, real, cache,
@@ -93,7 +93,7 @@ namespace HeadGait.Cli
                     if (train.Count == 0 || test.Count == 0) continue;
                     var (foldModels, gates, map) = cache == null
                         ? TrainFold(train, augment, names.Contains("thr"), names.Contains("cor"), realGateWindows)
-                        : CachedFold(Path.Combine(cache, scheme, TrainCommand.Safe(fold.Name)), () => TrainFold(train, augment, true, true, realGateWindows));
+                        : CachedFold(Path.Combine(cache, scheme, TrainCommand.Safe(fold.Name)), $"augment {augment}; glasses gate windows {(realGateWindows == null ? "none" : "yes")}", () => TrainFold(train, augment, true, true, realGateWindows));
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
                     foldModels.Svm = learned?.Svm;
@@ -192,29 +192,42 @@ namespace HeadGait.Cli
         }
 
         /// <summary>
-        /// A fold's THR and COR, gates and phase map from <paramref name="dir"/> when it holds them, else trained by
-        /// <paramref name="train"/> (THR and COR both) and kept there: the runs that change only how the classifiers run
-        /// score the same fold models without training them again.
+        /// A fold's THR and COR, gates and phase map from <paramref name="dir"/> when it holds them and they were trained by
+        /// this build of the core with the same <paramref name="options"/> (<see cref="FoldCacheStamp"/>), else trained by
+        /// <paramref name="train"/> (THR and COR both) and kept there, the stamp written last: the runs that change only how
+        /// the classifiers run score the same fold models without training them again, and a cache another build trained
+        /// (its fold models can differ: COR's clock lead moved with its replaced contacts) is trained again, not read.
         /// </summary>
         internal static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) CachedFold(
-            string dir, Func<(GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map)> train)
+            string dir, string options, Func<(GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map)> train)
         {
-            string gateFile = Path.Combine(dir, "learned-gate.txt"), mapFile = Path.Combine(dir, "phase-map.txt");
-            if (File.Exists(Path.Combine(dir, GaitModels.ThresholdFile)) && File.Exists(Path.Combine(dir, GaitModels.CorrelationFile)) && File.Exists(gateFile) && File.Exists(mapFile))
+            string gateFile = Path.Combine(dir, "learned-gate.txt"), mapFile = Path.Combine(dir, "phase-map.txt"), stampFile = Path.Combine(dir, FoldCacheStampFile);
+            string stamp = FoldCacheStamp(options);
+            bool complete = File.Exists(Path.Combine(dir, GaitModels.ThresholdFile)) && File.Exists(Path.Combine(dir, GaitModels.CorrelationFile)) && File.Exists(gateFile) && File.Exists(mapFile);
+            if (complete && File.Exists(stampFile) && File.ReadAllText(stampFile).Trim() == stamp)
             {
                 var cached = GaitModels.Load(dir);
                 string gateText = File.ReadAllText(gateFile).Trim();
                 var learnedGate = gateText.Length == 0 ? null : WalkingGate.Parse(gateText);
                 return (cached, (cached.Threshold.Gate, cached.Correlation.Gate, learnedGate), PhaseMap.Parse(File.ReadAllText(mapFile).Trim()));
             }
+            if (complete) Console.Error.WriteLine($"note: the fold cache {dir} was trained by another build or other options; training it again");
             var trained = train();
             Directory.CreateDirectory(dir);
+            File.Delete(stampFile);
             trained.Models.Threshold.Save(Path.Combine(dir, GaitModels.ThresholdFile));
             trained.Models.Correlation.Save(Path.Combine(dir, GaitModels.CorrelationFile));
             File.WriteAllText(gateFile, trained.Gates.Learned?.Serialize() ?? "");
             File.WriteAllText(mapFile, trained.Map.Serialize());
+            File.WriteAllText(stampFile, stamp);
             return trained;
         }
+
+        /// <summary>The file in a fold cache that says what trained it (<see cref="FoldCacheStamp"/>).</summary>
+        internal const string FoldCacheStampFile = "trained-by.txt";
+
+        /// <summary>What trains a fold cache: this build of the core (its module version id, which a deterministic build changes only with the code) and the training options.</summary>
+        internal static string FoldCacheStamp(string options) => $"core {typeof(GaitModels).Assembly.ManifestModule.ModuleVersionId:N}; {options}";
 
         /// <summary>A learned classifier with the fold's own gate and stance slope (fold models may predate them or hold ones from other data).</summary>
         static IGaitClassifier InFold(IGaitClassifier c, WalkingGate gate, PhaseMap map)

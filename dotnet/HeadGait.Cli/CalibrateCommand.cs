@@ -113,7 +113,7 @@ namespace HeadGait.Cli
             var models = ModelsOption();
             var classifier = new Option<string>("--classifier") { Description = "thr, cor, svm, blstm, a list or all", DefaultValueFactory = _ => "all" };
             var augment = new Option<int>("--augment") { Description = "augmented copies per training recording for THR and COR (as `train`)", DefaultValueFactory = _ => Training.GaitTraining.DefaultAugmentedCopies };
-            var cache = new Option<string>("--fold-cache") { Description = "keep each style fold's THR and COR here and reuse them (delete it when training changes)" };
+            var cache = new Option<string>("--fold-cache") { Description = "keep each style fold's THR and COR here and reuse them while this build and the same --augment trained them (else trained again)" };
             var rate = new Option<double>("--ankle-rate") { Description = "ankle trackers' frame rate (Hz)", DefaultValueFactory = _ => 72 };
             var seconds = new Option<double>("--walk-seconds") { Description = "the calibration walk: the held-out style's straight walks and turns joined up to this long (s); 0: its first straight walk alone", DefaultValueFactory = _ => 60 };
             var cvModels = new Option<string>("--cv-models") { Description = "judge the SVM and BLSTM with the style-fold models `headgait train --cv style --cv-only` wrote under DIR/style/<fold>/ (e.g. training/cv-models); default: the shipped models (not held out)" };

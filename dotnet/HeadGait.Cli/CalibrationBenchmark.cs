@@ -287,7 +287,7 @@ namespace HeadGait.Cli
         /// <summary>THR and COR trained on the fold's training styles, with the fold's gates and phase map (from the cache when it holds them).</summary>
         static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) FoldModels(Fold fold, List<Recording> train, int augment, string cache)
             => cache == null ? BenchmarkCommand.TrainFold(train, augment, true, true)
-                : BenchmarkCommand.CachedFold(Path.Combine(cache, TrainCommand.Safe(fold.Name)), () => BenchmarkCommand.TrainFold(train, augment, true, true));
+                : BenchmarkCommand.CachedFold(Path.Combine(cache, TrainCommand.Safe(fold.Name)), $"augment {augment}; glasses gate windows none", () => BenchmarkCommand.TrainFold(train, augment, true, true));
 
         static void Print(Dictionary<(string style, string clf, string variant), Cell> cells, Dictionary<string, double> cadence, List<string> names)
         {
