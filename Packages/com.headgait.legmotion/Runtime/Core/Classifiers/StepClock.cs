@@ -243,7 +243,7 @@ namespace HeadGait
         /// <summary>
         /// Seconds from a walk's first contact to its last before its gate-refusal counts stretch with the step period
         /// (<see cref="StillWindowsStepPeriod"/>): the false walks of a waving or gesturing head are young, and stretched they
-        /// were shown for longer. 0: from its first contact. COR sets 0.85 (<see cref="CorrelationSettings.Clock"/>).
+        /// were shown for longer. 0: at once. COR sets 0.85 (<see cref="CorrelationSettings.Clock"/>).
         /// </summary>
         public double StillWindowsAfterWalked = 0;
 
@@ -394,11 +394,13 @@ namespace HeadGait
 
         /// <summary>
         /// The step period (s) the gate-refusal counts stretch for (<see cref="StepClockSettings.StillWindowsStepPeriod"/>):
-        /// the walk's, or 0 (no stretch) while the head's tilt moves more than <see cref="StepClockSettings.StillWindowsMaxTiltChange"/>
-        /// or the walk's contacts span less than <see cref="StepClockSettings.StillWindowsAfterWalked"/>.
+        /// the walk's (<see cref="StepPeriod"/>), or 0 (no stretch) while the head's tilt moves more than
+        /// <see cref="StepClockSettings.StillWindowsMaxTiltChange"/> or the walk's contacts span less than
+        /// <see cref="StepClockSettings.StillWindowsAfterWalked"/> (each where set).
         /// </summary>
         public double RefusalStepPeriod
-            => settings.StillWindowsMaxTiltChange > 0 && tilt.Change > settings.StillWindowsMaxTiltChange || !(lastContact - boutStart >= settings.StillWindowsAfterWalked) ? 0 : period;
+            => settings.StillWindowsMaxTiltChange > 0 && tilt.Change > settings.StillWindowsMaxTiltChange
+               || settings.StillWindowsAfterWalked > 0 && !(lastContact - boutStart >= settings.StillWindowsAfterWalked) ? 0 : period;
 
         /// <summary>The step period (s) the head's rhythm showed at its last reading; 0 when it showed none.</summary>
         public double RhythmPeriod => rhythmPeriod;

@@ -243,14 +243,14 @@ namespace HeadGait
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;
             if (!clock.IsWalking(now)) walkingSince = double.NaN;
             else if (double.IsNaN(walkingSince)) walkingSince = now;
-            if (stillWindows == settings.Clock.StopAfterStillWindowsAfter(now - walkingSince, clock.StepPeriod)) clock.Stop();
+            if (stillWindows == settings.Clock.StopAfterStillWindowsAfter(now - walkingSince, clock.RefusalStepPeriod)) clock.Stop();
             bool walkingBefore = clock.IsWalking(now);
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks
             // back over its newest half second: a stream that begins mid-step crossed before it, and that contact is
             // dated when it happened, not when the stream began.
             int ago = CrossingAge(window, threshold, fresh ? (int)Math.Round(0.5 * window.SampleRate) : 1);
             fresh = false;
-            bool crossed = armed && ago >= 0 && settings.Clock.ContactAllowed(moving || firstStep, clock.IsWalking(now), stillWindows, clock.StepPeriod);
+            bool crossed = armed && ago >= 0 && settings.Clock.ContactAllowed(moving || firstStep, clock.IsWalking(now), stillWindows, clock.RefusalStepPeriod);
             if (crossed)
             {
                 armed = false;
