@@ -319,9 +319,15 @@ namespace HeadGait
         public double[] Standardise(SignalWindow window)
         {
             ReadFeatures(window, features);
-            int c = Features.Channels.Length;
-            for (int i = 0; i < features.Length; i++) features[i] = (features[i] - inputMean[i % c]) / inputScale[i % c];
+            StandardiseRow(features, 0);
             return features;
+        }
+
+        /// <summary>Standardises one window's features in place, <see cref="WindowFeatures.Width"/> values from <paramref name="offset"/>.</summary>
+        void StandardiseRow(double[] values, int offset)
+        {
+            int c = Features.Channels.Length, w = Features.Width;
+            for (int i = 0; i < w; i++) values[offset + i] = (values[offset + i] - inputMean[i % c]) / inputScale[i % c];
         }
 
         /// <summary>
@@ -344,9 +350,8 @@ namespace HeadGait
         {
             if (TimeScale == 1) return Standardise(window);
             Features.Extract(window, rowFeatures);
-            int c = Features.Channels.Length, w = Features.Width;
-            for (int i = 0; i < w; i++) rowFeatures[i] = (rowFeatures[i] - inputMean[i % c]) / inputScale[i % c];
-            Array.Copy(Standardise(window), 0, rowFeatures, w, w);
+            StandardiseRow(rowFeatures, 0);
+            Array.Copy(Standardise(window), 0, rowFeatures, Features.Width, Features.Width);
             return rowFeatures;
         }
 
