@@ -863,6 +863,38 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void ACountThatShrinksWhileTheGateRefusesStillEndsTheWalk()
+        {
+            // The gate-refusal count may shrink while the refusals go on: here an established walk's own, smaller count takes
+            // over mid-refusal (a contact's new step period or a moving tilt shrink it the same way). THR ended a walk only
+            // when the refusals reached the count exactly, so a count that dropped below them never ended it and the clock's
+            // own timeout did, later. With the smaller count taking over at any moment, the walk must end no later than with
+            // the larger count throughout.
+            var rec = WalkingStreamGenerator.Generate("walk then stand", new GaitSubject(), new StreamScript().Walk(6, Foot.Left).Stand(5), 5);
+            double LastWalking(double establishedAfter)
+            {
+                var s = TestData.CommittedThreshold.Clone();
+                s.Clock.StopAfterStillWindows = 60;
+                s.Clock.EstablishedStopAfterStillWindows = 15;
+                s.Clock.EstablishedAfter = establishedAfter;
+                s.Clock.StandingAfterPeriods = 4; // the clock's own timeout well after either count
+                s.Clock.HoldOnRhythm = false;
+                var result = ReplayEvaluator.Run(rec, new ThresholdClassifier(s), keepTrace: true);
+                return result.Predictions.FindLast(p => p.IsWalking).Time;
+            }
+            double withTheLargerCount = LastWalking(double.PositiveInfinity);
+            Assert.That(withTheLargerCount, Is.LessThan(6 + 2), "the larger count ends the walk before the clock's timeout");
+            int earlier = 0;
+            for (double after = 4.5; after <= 7.5; after += 0.05)
+            {
+                double end = LastWalking(after);
+                Assert.That(end, Is.LessThanOrEqualTo(withTheLargerCount), $"the smaller count taking over {after:0.00} s into the walk");
+                if (end < withTheLargerCount) earlier++;
+            }
+            Assert.That(earlier, Is.GreaterThan(0), "the smaller count does end some walks sooner");
+        }
+
+        [Test]
         public void StartsASlowCalmWalkAsWellAsItsOwnPace()
         {
             // The same walk 40 % slower and calmer (the benchmark's --slow): its gate score dips below walking at each heel

@@ -314,8 +314,7 @@ namespace HeadGait
             bool moving = template.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;
-            // At or past the count, not only at it: the count moves as the stretch comes and goes (StepClock.RefusalStepPeriod).
-            if (stillWindows > 0 && stillWindows >= settings.Clock.StopAfterStillWindowsAfter(double.NaN, clock.RefusalStepPeriod)) clock.Stop();
+            if (settings.Clock.EndsWalk(stillWindows, double.NaN, clock.RefusalStepPeriod)) clock.Stop();
             bool walkingBefore = clock.IsWalking(now);
             if (settings.Clock.ContactAllowed(moving || firstStep, walkingBefore, stillWindows, clock.RefusalStepPeriod))
             {

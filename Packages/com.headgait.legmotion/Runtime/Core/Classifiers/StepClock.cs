@@ -224,6 +224,14 @@ namespace HeadGait
             => ForStep(EstablishedStopAfterStillWindows > 0 && walkedFor >= EstablishedAfter ? EstablishedStopAfterStillWindows : StopAfterStillWindows, stepPeriod);
 
         /// <summary>
+        /// Whether <paramref name="stillWindows"/> gate-refused windows in a row end the walk (<see cref="StopAfterStillWindowsAfter"/>):
+        /// at or past the count, not only at it, as the count moves while the refusals go on (a contact changes the step period,
+        /// <see cref="StepClock.RefusalStepPeriod"/> drops its stretch when the tilt moves, an established walk takes its own count).
+        /// </summary>
+        public bool EndsWalk(int stillWindows, double walkedFor, double stepPeriod)
+            => stillWindows > 0 && stillWindows >= StopAfterStillWindowsAfter(walkedFor, stepPeriod);
+
+        /// <summary>
         /// The step period (s) the gate-refusal counts (<see cref="StopAfterStillWindows"/>, <see cref="EstablishedStopAfterStillWindows"/>,
         /// <see cref="ContactWhileStillWindows"/>) hold for; a walk stepping slower has them stretched by its period over this
         /// one, as its head lies still between steps for longer. A calm walker slowed down 40 % had the gate shut for more than

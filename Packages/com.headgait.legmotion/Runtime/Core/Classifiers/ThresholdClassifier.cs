@@ -243,7 +243,7 @@ namespace HeadGait
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;
             if (!clock.IsWalking(now)) walkingSince = double.NaN;
             else if (double.IsNaN(walkingSince)) walkingSince = now;
-            if (stillWindows == settings.Clock.StopAfterStillWindowsAfter(now - walkingSince, clock.RefusalStepPeriod)) clock.Stop();
+            if (settings.Clock.EndsWalk(stillWindows, now - walkingSince, clock.RefusalStepPeriod)) clock.Stop();
             bool walkingBefore = clock.IsWalking(now);
             // The crossing is read between the window's last two samples. The first window after a (re)start also looks
             // back over its newest half second: a stream that begins mid-step crossed before it, and that contact is
