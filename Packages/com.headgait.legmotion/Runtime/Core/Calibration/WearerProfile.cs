@@ -28,6 +28,14 @@ namespace HeadGait.Calibration
         public const double MaxGateShift = 1.0;
 
         /// <summary>
+        /// Most a profile fitted with ankle trackers may open COR's walking gate where the opened gate pays on the walk
+        /// (<see cref="HeadGait.Calibration.AdaptationSettings.CorGate"/>): the learned models' bound, for the same reason (a
+        /// slow wearer's walk can need it; style CV, COR, ankle trackers, in-sample as a choice: bn1 *feminine* 41.3 to 37.8 %
+        /// at 1, 35.7 % at 2, 34.8 % at 3, its gestures and bows never shown walking; no other style's gate paid on its walk).
+        /// </summary>
+        public const double MaxCorGateShift = 2.0;
+
+        /// <summary>
         /// Most a profile may open the SVM's and BLSTM's walking gate: wider than the detectors' <see cref="MaxGateShift"/>,
         /// as a slow wearer's walk can need it (style CV, SVM, ankle trackers: bn1 *feminine*'s gate reached 1 and 2, its
         /// misclassification 32.6 to 30.4 % at 2, its gestures still never shown walking) and the learned gain and gate are
