@@ -240,6 +240,7 @@ namespace HeadGait.Cli
                             case "thr": a.Threshold = on; break;
                             case "gates": a.DetectorGates = on; break;
                             case "cor-gate": a.CorGate = on; break;
+                            case "cor-gate-walking": a.CorGateWhileWalking = on; break;
                             case "learned-gate": a.LearnedGate = on; break;
                             case "learned-gain": a.LearnedGain = on; break;
                             case "learned-refit": a.LearnedRefit = on; break;
@@ -264,7 +265,7 @@ namespace HeadGait.Cli
         internal static string Describe(AdaptationSettings a) => string.Join(" ", new[]
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
-            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.CorGate ? $"cor-gate (at most {a.MaxCorGateShift:0.##})" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
+            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.CorGate ? $"cor-gate ({(a.CorGateWhileWalking ? "walks in progress, " : "")}at most {a.MaxCorGateShift:0.##})" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
             a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LearnedTimeScale ? $"learned-time-scale ({(a.LearnedTimeScaleUpward ? "" : "quicker wearers only, ")}share {a.LearnedTimeScaleShare:0.##})" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", $"(COR {a.CorAcceptMargin:0.###}{(double.IsNaN(a.ShortWalkMargin) ? "" : $", {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps")})", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 

@@ -40,17 +40,23 @@ namespace HeadGait.Calibration
         /// </summary>
         public bool LearnedGate = true;
         /// <summary>
-        /// With ankle trackers, open COR's walking gate as far as the walk's walking windows need (<see cref="WalkingGate.DetectorPass"/>
-        /// of them passing, at most <see cref="MaxCorGateShift"/>), kept only where the opened COR beats the chosen one on the
-        /// walk by a COR candidate's margin (<see cref="ShortWalkMargin"/> on a walk of under <see cref="CorThresholdSteps"/>
-        /// steps, else <see cref="CorAcceptMargin"/>): the ankles say where the wearer walked, so a gate that refuses their
-        /// walking shows on the walk's score. Style CV, COR, in-sample as a choice: bn1 *feminine* (0.70 s a step, one clip of
-        /// 12 steps, a quarter of its walking refused) 41.3 to 35.7 % (its sideways walks 88.8 / 72.4 to 65.5 / 52.9 %), its
-        /// gestures and bows never shown walking; no other style's opened gate paid on its walk (unjudged, as
-        /// <see cref="DetectorGates"/>, bn1 *musical*'s gestures were shown walking 1.6 to 2.0 %). Self-supervised off: the
-        /// labels come from COR itself, read with its gate open.
+        /// With ankle trackers, open COR's walking gate for walks in progress (<see cref="CorGateWhileWalking"/>) as far as the
+        /// walk's walking windows need (<see cref="WalkingGate.DetectorPass"/> of them passing, at most <see cref="MaxCorGateShift"/>),
+        /// kept only where that beats the chosen COR on the walk by a COR candidate's margin (<see cref="ShortWalkMargin"/> on a
+        /// walk of under <see cref="CorThresholdSteps"/> steps, else <see cref="CorAcceptMargin"/>): the ankles say where the
+        /// wearer walked, so a gate that refuses their walking shows on the walk's score. Style CV, COR, in-sample as a
+        /// choice: bn1 *feminine* (0.70 s a step, one clip of 12 steps, a quarter of its walking refused) 41.3 to 36.9 %
+        /// (pooled 21.4 to 18.1 %), its gestures and bows never shown walking; no other style's opened gate paid on its walk
+        /// (unjudged, as <see cref="DetectorGates"/>, bn1 *musical*'s gestures were shown walking 1.6 to 2.0 %).
+        /// Self-supervised off: the labels come from COR itself, read with its gate open.
         /// </summary>
         public bool CorGate = true;
+        /// <summary>
+        /// With <see cref="CorGate"/>, open COR's gate only for a walk in progress (<see cref="CorrelationTemplate.WalkingGateHoldShift"/>):
+        /// a start still needs the trained gate. Opened for starts too, bn1 *feminine* scored 35.7 instead of 36.9 %, but a
+        /// generated calm wearer's standing with head movement was shown walking 0.9 % instead of never (0.75 % opened by 1).
+        /// </summary>
+        public bool CorGateWhileWalking = true;
         /// <summary>Most <see cref="CorGate"/> opens COR's gate (log-odds; at most <see cref="WearerProfile.MaxCorGateShift"/>).</summary>
         public double MaxCorGateShift = WearerProfile.MaxCorGateShift;
         /// <summary>Most a calibration opens a walking gate (log-odds; at most <see cref="WearerProfile.MaxGateShift"/>).</summary>
@@ -412,7 +418,7 @@ namespace HeadGait.Calibration
             double opened0 = cor.Gate.Weights[WalkingGate.InputCount] - trainedGate.Weights[WalkingGate.InputCount];
             double shift = GateShift(cor.Gate, walk, WalkingGate.DetectorPass, Math.Min(a.MaxCorGateShift, WearerProfile.MaxCorGateShift) - opened0);
             if (!(shift > 0)) return cor;
-            var opened = cor.With(gate: WearerProfile.OpenGate(cor.Gate, shift));
+            var opened = a.CorGateWhileWalking ? cor.With(walkingGateHoldShift: shift) : cor.With(gate: WearerProfile.OpenGate(cor.Gate, shift));
             return Pays(() => new CorrelationClassifier(opened), () => new CorrelationClassifier(cor), walk, CorMargin(a, steps)) ? opened : cor;
         }
 

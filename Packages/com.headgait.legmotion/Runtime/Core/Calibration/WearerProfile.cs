@@ -28,10 +28,10 @@ namespace HeadGait.Calibration
         public const double MaxGateShift = 1.0;
 
         /// <summary>
-        /// Most a profile fitted with ankle trackers may open COR's walking gate where the opened gate pays on the walk
-        /// (<see cref="HeadGait.Calibration.AdaptationSettings.CorGate"/>): the learned models' bound, for the same reason (a
-        /// slow wearer's walk can need it; style CV, COR, ankle trackers, in-sample as a choice: bn1 *feminine* 41.3 to 37.8 %
-        /// at 1, 35.7 % at 2, 34.8 % at 3, its gestures and bows never shown walking; no other style's gate paid on its walk).
+        /// Most a profile fitted with ankle trackers may open COR's walking gate for walks in progress where that pays on the
+        /// walk (<see cref="HeadGait.Calibration.AdaptationSettings.CorGate"/>, <see cref="CorrelationTemplate.WalkingGateHoldShift"/>):
+        /// the learned models' bound, for the same reason (a slow wearer's walk can need it). Style CV, COR, ankle trackers,
+        /// in-sample as a choice: bn1 *feminine* 41.3 to 36.9 % at 2; at 1 the opened gate did not pay on its clip.
         /// </summary>
         public const double MaxCorGateShift = 2.0;
 
