@@ -276,10 +276,11 @@ namespace HeadGait.Cli
             var ci = CultureInfo.InvariantCulture;
             string refits = string.Concat(p.LearnedAdjustments.Select(a => string.Format(ci, ", {0} channel gains {1}, {2} output biases moved (largest {3:F2})",
                 a.Kind, string.Join("/", a.ChannelGain.Select(g => g.ToString("0.##", ci))), a.BiasShift.Count(b => b != 0), a.BiasShift.Select(Math.Abs).DefaultIfEmpty(0).Max())));
-            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s), THR {4}, learned gain {5:F2}{6}{7}", p.Steps,
+            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s{8}), THR {4}, learned gain {5:F2}{6}{7}", p.Steps,
                 p.Correlation.Templates.Count > models.Correlation.Templates.Count ? "own step" : "as trained", p.Correlation.MinCorrelation, p.Correlation.ClockLead,
                 p.Threshold.Serialize() == models.Threshold.Serialize() ? "as trained" : string.Format(ci, "floor {0:F2} (trained {1:F2})", p.Threshold.Floor, models.Threshold.Floor),
-                p.LearnedGain, (p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "") + (p.LearnedTimeScale != 1 ? string.Format(ci, ", learned time scale {0:F2}", p.LearnedTimeScale) : ""), refits);
+                p.LearnedGain, (p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "") + (p.LearnedTimeScale != 1 ? string.Format(ci, ", learned time scale {0:F2}", p.LearnedTimeScale) : ""), refits,
+                p.Correlation.WalkingGateHoldShift != 0 ? string.Format(ci, ", gate +{0:F2} for walks in progress", p.Correlation.WalkingGateHoldShift) : "");
         }
 
         /// <summary>The BVH a converted recording names in its source line, when it is in the folder.</summary>
