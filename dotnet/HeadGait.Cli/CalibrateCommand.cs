@@ -118,13 +118,16 @@ namespace HeadGait.Cli
             var seconds = new Option<double>("--walk-seconds") { Description = "the calibration walk: the held-out style's straight walks and turns joined up to this long (s); 0: its first straight walk alone", DefaultValueFactory = _ => 60 };
             var cvModels = new Option<string>("--cv-models") { Description = "judge the SVM and BLSTM with the style-fold models `headgait train --cv style --cv-only` wrote under DIR/style/<fold>/ (e.g. training/cv-models); default: the shipped models (not held out)" };
             var adapt = AdaptOption();
+            var styles = new Option<string>("--styles") { Description = "run only these held-out styles (comma-separated fold names, e.g. bn1/feminine,bn1/giant); default: every style" };
+            var perRecording = new Option<bool>("--per-recording") { Description = "also print each scored recording's misclassification, walking shown as standing, contact timing and right foot, per variant" };
             var c = new Command("benchmark", "Leave one style out: calibrate on up to a minute of the held-out style's walking (from its motion capture, with ankle trackers and self-supervised) and score the style's other recordings against the uncalibrated classifiers.")
             {
-                data, bvh, models, classifier, augment, cache, rate, seconds, cvModels, adapt,
+                data, bvh, models, classifier, augment, cache, rate, seconds, cvModels, adapt, styles, perRecording,
             };
             c.SetAction(parse => CalibrationBenchmark.Run(parse.GetValue(data), parse.GetValue(bvh), parse.GetValue(models), Classifiers.Parse(parse.GetValue(classifier)),
                 parse.GetValue(augment), parse.GetValue(cache), parse.GetValue(rate), OptionValues.Number(parse.GetValue(seconds), "--walk-seconds", 0, 600),
-                parse.GetValue(cvModels) == null ? null : OptionValues.Folder(parse.GetValue(cvModels), "--cv-models"), parse.GetValue(adapt)));
+                parse.GetValue(cvModels) == null ? null : OptionValues.Folder(parse.GetValue(cvModels), "--cv-models"), parse.GetValue(adapt),
+                parse.GetValue(styles), parse.GetValue(perRecording)));
             return c;
         }
     }

@@ -23,7 +23,7 @@ namespace HeadGait.Cli
             public readonly List<GaitMetrics> All = new List<GaitMetrics>(), Standing = new List<GaitMetrics>();
         }
 
-        public static int Run(string[] data, string bvhFolder, string modelFolder, List<string> names, int augment, string cache, double ankleRate, double walkSeconds, string cvModels, string adapt)
+        public static int Run(string[] data, string bvhFolder, string modelFolder, List<string> names, int augment, string cache, double ankleRate, double walkSeconds, string cvModels, string adapt, string styles = null, bool perRecording = false)
         {
             var (feetSettings, selfSettings) = Settings(adapt);
             if (!Directory.Exists(bvhFolder)) throw new UsageException($"no such folder: {bvhFolder}");
@@ -33,6 +33,13 @@ namespace HeadGait.Cli
             var shipped = GaitModels.Load(folder);
             var byName = recordings.ToDictionary(r => r.Name);
             var folds = CrossValidation.LeaveOneStyleOut(byName.Keys);
+            if (!string.IsNullOrWhiteSpace(styles))
+            {
+                var wanted = styles.Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries).ToList();
+                var unknown = wanted.Where(w => folds.All(f => f.Name != w)).ToList();
+                if (unknown.Count > 0) throw new UsageException($"--styles: no style fold named {string.Join(", ", unknown)} (folds: {string.Join(", ", folds.Select(f => f.Name))})");
+                folds = folds.Where(f => wanted.Contains(f.Name)).ToList();
+            }
             var cells = new Dictionary<(string style, string clf, string variant), Cell>();
             var notes = new List<string>();
             var cadence = new Dictionary<string, double>();
@@ -129,6 +136,13 @@ namespace HeadGait.Cli
                 foreach (var clf in names)
                     Console.WriteLine("  " + clf + ": " + string.Join("  ", Variants.Select(v => cells.TryGetValue((fold.Name, clf, v), out var c)
                         ? $"{v} {100 * GaitMetrics.Pool(c.All).MisclassificationRate:F1} %" : $"{v} -")));
+                if (perRecording)
+                    foreach (var (rec, metrics) in new[] { labelled }.Select(rec => (rec, metrics: names.SelectMany(clf => Enumerable.Range(0, Variants.Length).Select(v =>
+                        (clf, v, variantModels[v].Create(clf, out string warning) is var c && warning == null ? ReplayEvaluator.Run(rec, c).ClassifierMetrics : null))).ToList())).Concat(scored))
+                        foreach (var group in metrics.Where(m => m.Item3 != null).GroupBy(m => m.clf))
+                            Console.WriteLine($"    {rec.Name,-32} {group.Key,-5} " + string.Join("  ", group.Select(m => string.Format(CultureInfo.InvariantCulture,
+                                "{0} {1:F1} % (walking shown standing {2:F1}, contacts {3:+0;-0} ms, right foot {4:F0} %)", Variants[m.v], 100 * m.Item3.MisclassificationRate,
+                                100 * m.Item3.WalkingAsStanding, m.Item3.StepTimingMedianMs, 100 * m.Item3.StepRightFoot))));
             }
             Print(cells, cadence, names);
             foreach (var n in notes) Console.WriteLine("note: " + n);
@@ -182,8 +196,8 @@ namespace HeadGait.Cli
 
         /// <summary>
         /// The refitted parts, from <c>--adapt</c>: a comma-separated list applied on top of the defaults for each source
-        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search,
-        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a detector's gate opens), learned-gate-cap=LOGODDS (most the learned models' gate opens), search-cap=SHIFT (most the learned refit's search moves an output shift);
+        /// (<see cref="AdaptationSettings.For"/>): cor-template, cor-threshold, cor-lead, cor-gate (COR's gate opened where it pays on the walk), thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search,
+        /// open-labels (self-supervised labels read with COR's gate open), fill-missed (a step COR missed in a steady rhythm filled in), cor-fuller (of COR's candidates that pay, the most refitted), each optionally prefixed no- to turn it off; prior=STEPS (THR's shrinkage), margin=SHARE (NaN: keep every part), short-margin=SHARE (COR's margin on a walk of under threshold-steps; NaN: margin), cor-gate-cap=LOGODDS (most cor-gate opens COR's gate), own-templates=N (the wearer's mean steps from a walk of threshold-steps or more), fill-below=N (self-supervised: missed steps filled in only below N sure steps; 0: always), template-steps=N (the wearer's own step from N steps), threshold-steps=N (COR's threshold refitted from N steps), gate-cap=LOGODDS (most a detector's gate opens), learned-gate-cap=LOGODDS (most the learned models' gate opens), search-cap=SHIFT (most the learned refit's search moves an output shift);
         /// self: or feet: before an item applies it to that source only.
         /// </summary>
         internal static (AdaptationSettings Feet, AdaptationSettings Self) Settings(string adapt)
@@ -213,6 +227,7 @@ namespace HeadGait.Cli
                     else if (key.StartsWith("own-templates=", StringComparison.Ordinal)) a.CorOwnTemplates = (int)Math.Min(16, Number(key.Substring(14)));
                     else if (key.StartsWith("still-slack=", StringComparison.Ordinal)) a.StillSlack = Number(key.Substring(12));
                     else if (key.StartsWith("short-margin=", StringComparison.Ordinal)) a.ShortWalkMargin = Number(key.Substring(13));
+                    else if (key.StartsWith("cor-gate-cap=", StringComparison.Ordinal)) a.MaxCorGateShift = Number(key.Substring(13));
                     else if (key.StartsWith("cor-margin=", StringComparison.Ordinal)) a.CorAcceptMargin = Number(key.Substring(11));
                     else if (key.StartsWith("threshold-steps=", StringComparison.Ordinal)) a.CorThresholdSteps = (int)Math.Min(int.MaxValue, Number(key.Substring(16)));
                     else if (key.StartsWith("time-scale-share=", StringComparison.Ordinal)) a.LearnedTimeScaleShare = Number(key.Substring(17));
@@ -224,6 +239,8 @@ namespace HeadGait.Cli
                             case "cor-lead": a.CorLead = on; break;
                             case "thr": a.Threshold = on; break;
                             case "gates": a.DetectorGates = on; break;
+                            case "cor-gate": a.CorGate = on; break;
+                            case "cor-gate-walking": a.CorGateWhileWalking = on; break;
                             case "learned-gate": a.LearnedGate = on; break;
                             case "learned-gain": a.LearnedGain = on; break;
                             case "learned-refit": a.LearnedRefit = on; break;
@@ -235,7 +252,7 @@ namespace HeadGait.Cli
                             case "fill-missed": a.FillMissedSteps = on; break;
                             case "cor-fuller": a.PreferFullerCorRefit = on; break;
                             case "still-check": a.StillCheck = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, learned-time-scale, time-scale-up, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, time-scale-share=SHARE, prior=STEPS, margin=SHARE, short-margin=SHARE, cor-margin=SHARE, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, cor-gate, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, learned-time-scale, time-scale-up, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, time-scale-share=SHARE, prior=STEPS, margin=SHARE, short-margin=SHARE, cor-margin=SHARE, cor-gate-cap=LOGODDS, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -248,7 +265,7 @@ namespace HeadGait.Cli
         internal static string Describe(AdaptationSettings a) => string.Join(" ", new[]
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
-            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
+            a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.CorGate ? $"cor-gate ({(a.CorGateWhileWalking ? "walks in progress, " : "")}at most {a.MaxCorGateShift:0.##})" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
             a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LearnedTimeScale ? $"learned-time-scale ({(a.LearnedTimeScaleUpward ? "" : "quicker wearers only, ")}share {a.LearnedTimeScaleShare:0.##})" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", $"(COR {a.CorAcceptMargin:0.###}{(double.IsNaN(a.ShortWalkMargin) ? "" : $", {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps")})", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
@@ -259,10 +276,11 @@ namespace HeadGait.Cli
             var ci = CultureInfo.InvariantCulture;
             string refits = string.Concat(p.LearnedAdjustments.Select(a => string.Format(ci, ", {0} channel gains {1}, {2} output biases moved (largest {3:F2})",
                 a.Kind, string.Join("/", a.ChannelGain.Select(g => g.ToString("0.##", ci))), a.BiasShift.Count(b => b != 0), a.BiasShift.Select(Math.Abs).DefaultIfEmpty(0).Max())));
-            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s), THR {4}, learned gain {5:F2}{6}{7}", p.Steps,
+            return string.Format(ci, "{0} steps: COR {1} (threshold {2:F2}, lead {3:F3} s{8}), THR {4}, learned gain {5:F2}{6}{7}", p.Steps,
                 p.Correlation.Templates.Count > models.Correlation.Templates.Count ? "own step" : "as trained", p.Correlation.MinCorrelation, p.Correlation.ClockLead,
                 p.Threshold.Serialize() == models.Threshold.Serialize() ? "as trained" : string.Format(ci, "floor {0:F2} (trained {1:F2})", p.Threshold.Floor, models.Threshold.Floor),
-                p.LearnedGain, (p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "") + (p.LearnedTimeScale != 1 ? string.Format(ci, ", learned time scale {0:F2}", p.LearnedTimeScale) : ""), refits);
+                p.LearnedGain, (p.LearnedGateShift != 0 ? string.Format(ci, ", learned gate +{0:F2}", p.LearnedGateShift) : "") + (p.LearnedTimeScale != 1 ? string.Format(ci, ", learned time scale {0:F2}", p.LearnedTimeScale) : ""), refits,
+                p.Correlation.WalkingGateHoldShift != 0 ? string.Format(ci, ", gate +{0:F2} for walks in progress", p.Correlation.WalkingGateHoldShift) : "");
         }
 
         /// <summary>The BVH a converted recording names in its source line, when it is in the folder.</summary>

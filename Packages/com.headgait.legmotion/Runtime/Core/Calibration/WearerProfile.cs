@@ -28,6 +28,14 @@ namespace HeadGait.Calibration
         public const double MaxGateShift = 1.0;
 
         /// <summary>
+        /// Most a profile fitted with ankle trackers may open COR's walking gate for walks in progress where that pays on the
+        /// walk (<see cref="HeadGait.Calibration.AdaptationSettings.CorGate"/>, <see cref="CorrelationTemplate.WalkingGateHoldShift"/>):
+        /// the learned models' bound, for the same reason (a slow wearer's walk can need it). Style CV, COR, ankle trackers,
+        /// in-sample as a choice: bn1 *feminine* 41.3 to 36.9 % at 2; at 1 the opened gate did not pay on its clip.
+        /// </summary>
+        public const double MaxCorGateShift = 2.0;
+
+        /// <summary>
         /// Most a profile may open the SVM's and BLSTM's walking gate: wider than the detectors' <see cref="MaxGateShift"/>,
         /// as a slow wearer's walk can need it (style CV, SVM, ankle trackers: bn1 *feminine*'s gate reached 1 and 2, its
         /// misclassification 32.6 to 30.4 % at 2, its gestures still never shown walking) and the learned gain and gate are

@@ -311,7 +311,10 @@ namespace HeadGait
             double best = -1;
             int bestIndex = -1, bestTemplate = 0;
             clock.FollowRhythm(window, template.Gate.LevelTolerance);
-            bool moving = template.Gate.Passes(window, out double gateLogOdds) && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
+            bool passes = template.Gate.Passes(window, out double gateLogOdds);
+            // A wearer's profile may open the gate for a walk in progress (CorrelationTemplate.WalkingGateHoldShift): never for a start.
+            if (!passes && template.WalkingGateHoldShift > 0 && clock.IsWalking(now)) passes = gateLogOdds + template.WalkingGateHoldShift > 0;
+            bool moving = passes && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;
             if (settings.Clock.EndsWalk(stillWindows, double.NaN, clock.RefusalStepPeriod)) clock.Stop();

@@ -56,8 +56,10 @@ namespace HeadGait
         public const int DefaultTemplateCount = 3;
 
         public CorrelationTemplate(IReadOnlyList<StepTemplate> templates, PhaseMap phaseMap, double minCorrelation, WalkingGate gate, double clockLead = 0,
-            double leadPerLogBounce = 0, double leadReferenceBounce = StepClockSettings.DefaultLeadReferenceBounce)
+            double leadPerLogBounce = 0, double leadReferenceBounce = StepClockSettings.DefaultLeadReferenceBounce, double walkingGateHoldShift = 0)
         {
+            if (!(walkingGateHoldShift >= 0 && walkingGateHoldShift <= MaxWalkingGateHoldShift)) throw new ArgumentException($"The walking gate's hold shift must lie in 0..{MaxWalkingGateHoldShift} log-odds.");
+            WalkingGateHoldShift = walkingGateHoldShift;
             if (templates == null || templates.Count < 1 || templates.Count > 16) throw new ArgumentException("COR needs 1 to 16 step templates.");
             if (!(minCorrelation > -1 && minCorrelation < 1)) throw new ArgumentException("The minimum correlation must lie in (-1, 1).");
             if (!(Math.Abs(clockLead) < 0.5)) throw new ArgumentException("The clock lead must lie within 0.5 s.");
@@ -90,6 +92,16 @@ namespace HeadGait
         /// <summary>The bounce (m/s^2) at which the lead is <see cref="ClockLead"/>: the training contacts' median.</summary>
         public double LeadReferenceBounce { get; }
 
+        /// <summary>
+        /// Log-odds by which the walking gate opens for a walk in progress only (it keeps a walk going, never starts one): a
+        /// wearer's profile sets it where the ankle trackers showed the gate refusing their walking
+        /// (<see cref="HeadGait.Calibration.AdaptationSettings.CorGate"/>); trained models 0.
+        /// </summary>
+        public double WalkingGateHoldShift { get; }
+
+        /// <summary>Most <see cref="WalkingGateHoldShift"/> may be.</summary>
+        public const double MaxWalkingGateHoldShift = 5;
+
         public int StepsUsed
         {
             get
@@ -101,9 +113,9 @@ namespace HeadGait
         }
 
         public CorrelationTemplate With(double? minCorrelation = null, WalkingGate gate = null, double? clockLead = null, IReadOnlyList<StepTemplate> templates = null,
-            double? leadPerLogBounce = null, double? leadReferenceBounce = null)
+            double? leadPerLogBounce = null, double? leadReferenceBounce = null, double? walkingGateHoldShift = null)
             => new CorrelationTemplate(templates ?? Templates, PhaseMap, minCorrelation ?? MinCorrelation, gate ?? Gate, clockLead ?? ClockLead,
-                leadPerLogBounce ?? LeadPerLogBounce, leadReferenceBounce ?? LeadReferenceBounce);
+                leadPerLogBounce ?? LeadPerLogBounce, leadReferenceBounce ?? LeadReferenceBounce, walkingGateHoldShift ?? WalkingGateHoldShift);
 
         /// <summary>The same templates with every contact lag set to <paramref name="lag"/>.</summary>
         public CorrelationTemplate WithLag(double lag)
@@ -294,6 +306,8 @@ namespace HeadGait
                 new KeyValuePair<string, string>("clock_lead_reference_bounce", LeadReferenceBounce.ToString("R", ci)),
                 new KeyValuePair<string, string>("templates", Templates.Count.ToString(ci)),
             };
+            // Written only when set (a wearer's profile), so that trained templates read as before.
+            if (WalkingGateHoldShift != 0) pairs.Insert(pairs.Count - 1, new KeyValuePair<string, string>("walking_gate_hold_shift", WalkingGateHoldShift.ToString("R", ci)));
             for (int k = 0; k < Templates.Count; k++)
             {
                 var t = Templates[k];
@@ -319,6 +333,7 @@ namespace HeadGait
             double lead = kv.Number("clock_lead", -0.49, 0.49, 0);
             double leadPerLogBounce = kv.Number("clock_lead_per_log_bounce", -StepClockSettings.MaxLeadPerLogBounce, StepClockSettings.MaxLeadPerLogBounce, 0);
             double leadReferenceBounce = kv.Number("clock_lead_reference_bounce", 1e-6, 999, StepClockSettings.DefaultLeadReferenceBounce);
+            double holdShift = kv.Number("walking_gate_hold_shift", 0, MaxWalkingGateHoldShift, 0);
             int count = (int)kv.Number("templates", 1, 16);
             var templates = new List<StepTemplate>();
             for (int k = 0; k < count; k++)
@@ -328,7 +343,7 @@ namespace HeadGait
                 templates.Add(new StepTemplate(smv, kv.Numbers($"step_lateral.{k}", StepPoints, -1e6, 1e6),
                     kv.Number($"contact_lag.{k}", -0.49, 0.49), (int)kv.Number($"steps.{k}", 0, int.MaxValue, 0)));
             }
-            return new CorrelationTemplate(templates, map, minR, gate, lead, leadPerLogBounce, leadReferenceBounce);
+            return new CorrelationTemplate(templates, map, minR, gate, lead, leadPerLogBounce, leadReferenceBounce, holdShift);
         }
     }
 }
