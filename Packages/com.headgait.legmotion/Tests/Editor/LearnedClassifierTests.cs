@@ -271,6 +271,50 @@ namespace HeadGait.Tests
             Assert.That(unheld.FindAll(p => p.time >= from && p.time < to).Exists(p => !p.walking), Is.True, "without the hold the refusals end the walk");
         }
 
+        /// <summary>A gate that gives every window <paramref name="logOdds"/> (levelled as <paramref name="like"/>, no rhythm of its own).</summary>
+        static WalkingGate ScoringEveryWindow(double logOdds, WalkingGate like)
+        {
+            var weights = new double[WalkingGate.LinearWeightCount];
+            weights[weights.Length - 1] = logOdds;
+            return WalkingGate.FromWeights(weights, like.LevelTolerance);
+        }
+
+        [Test]
+        public void ASettledWalkRidesOutTheGatesNearMissesButNoneStartsOne()
+        {
+            // The generated straight walk, its gate swapped for one that refuses every window by 1 log-odds for 1.5 s in the
+            // middle, as the gate refuses slow, calm walkers, the head's rhythm not holding (HoldOnRhythm off): the SVM's walk
+            // goes on through them. Before NarrowRefusalLogOdds the refusals ended it.
+            var rec = TestData.Eval("walk_straight");
+            var models = GaitModels.Load(Models);
+            double from = rec.Samples[rec.Samples.Count / 2].Imu.Time, to = from + 1.5;
+            List<(double time, bool walking)> Shown(double narrow, double gateFrom, double refusal)
+            {
+                var settings = SvmClassifier.DefaultFilter();
+                settings.HoldOnRhythm = false;
+                settings.NarrowRefusalLogOdds = narrow;
+                var c = new SvmClassifier(models.Svm, settings);
+                var gate = c.Gate;
+                var refusing = ScoringEveryWindow(refusal, gate);
+                var pre = new StreamPreprocessor(new PreprocessorSettings { History = c.WindowLength });
+                var shown = new List<(double, bool)>();
+                foreach (var s in rec.Samples)
+                    pre.Push(s.Imu, w =>
+                    {
+                        c.Gate = w.EndTime >= gateFrom && w.EndTime < to ? refusing : gate;
+                        shown.Add((w.EndTime, c.Classify(w).IsWalking));
+                    });
+                return shown;
+            }
+            Assert.That(SvmClassifier.DefaultFilter().NarrowRefusalLogOdds, Is.EqualTo(2));
+            var held = Shown(2, from, -1);
+            Assert.That(held.Exists(p => p.time > from - 1 && p.time < from && p.walking), Is.True, "walking before the near misses");
+            Assert.That(held.FindAll(p => p.time >= from - 0.5 && p.time < to + 0.5).TrueForAll(p => p.walking), Is.True, "one walk through the near misses");
+            Assert.That(Shown(0, from, -1).FindAll(p => p.time >= from && p.time < to).Exists(p => !p.walking), Is.True, "without the hold they end the walk");
+            Assert.That(Shown(2, from, -3).FindAll(p => p.time >= from && p.time < to).Exists(p => !p.walking), Is.True, "a refusal by more ends it");
+            Assert.That(Shown(2, double.NegativeInfinity, -1).FindAll(p => p.time < to).TrueForAll(p => !p.walking), Is.True, "near misses from the start start no walk");
+        }
+
         [Test]
         public void TheGateVerdictFollowsItsLogOdds()
         {

@@ -12,6 +12,12 @@ namespace HeadGait
         /// </summary>
         RefusesInStepRhythm,
 
+        /// <summary>
+        /// Refuses by less than <see cref="PhaseFilterSettings.NarrowRefusalLogOdds"/>, the head's rhythm not holding a walk:
+        /// a walk in progress past its first moments rides it out as one the rhythm holds; otherwise as <see cref="Refuses"/>.
+        /// </summary>
+        RefusesNarrowly,
+
         /// <summary>May be walking: the model decides.</summary>
         Passes,
 

@@ -492,7 +492,12 @@ namespace HeadGait
         {
             if (Gate == null) return GateVerdict.Passes;
             FollowRhythm(window);
-            if (!Gate.Passes(window, out double logOdds)) return rhythmHolds ? GateVerdict.RefusesInStepRhythm : GateVerdict.Refuses;
+            if (!Gate.Passes(window, out double logOdds))
+            {
+                if (rhythmHolds) return GateVerdict.RefusesInStepRhythm;
+                double narrow = filter?.Settings.NarrowRefusalLogOdds ?? 0;
+                return narrow > 0 && logOdds > -narrow ? GateVerdict.RefusesNarrowly : GateVerdict.Refuses;
+            }
             if (filter == null) return GateVerdict.Passes;
             if (logOdds >= filter.Settings.SureWalkingLogOdds) return GateVerdict.SurelyWalking;
             if (!filter.Settings.SureOnStepRhythm || !Gate.UsesStepRhythm) return GateVerdict.Passes;
@@ -564,11 +569,12 @@ namespace HeadGait
             bool bending = Bending(tilt.Change, now) || bendingFromStill;
             if (bending) gate = GateVerdict.Refuses;
             if (gate == GateVerdict.SurelyWalking) lastSurePass = now;
-            bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm;
+            bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm || gate == GateVerdict.RefusesNarrowly;
             refusedRun = refused ? refusedRun + 1 : 0;
-            // While the head's rhythm holds a walk in progress, the model decides as if the gate had passed the window;
-            // the refusals still count, so one the rhythm no longer holds ends the walk at once.
-            bool heldByRhythm = gate == GateVerdict.RefusesInStepRhythm && filter != null && filter.Settings.HoldOnRhythm && WasWalking;
+            // While the head's rhythm holds a walk in progress (or a settled walk's refusal is a near miss), the model decides
+            // as if the gate had passed the window; the refusals still count, so one no longer held ends the walk at once.
+            bool heldByRhythm = filter != null && WasWalking
+                && (gate == GateVerdict.RefusesInStepRhythm && filter.Settings.HoldOnRhythm || gate == GateVerdict.RefusesNarrowly && !IsYoung(now));
             bool ridden = refused && !heldByRhythm && filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
             bool young = IsYoung(now);
             ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate, young);

@@ -102,6 +102,18 @@ namespace HeadGait
         public bool HoldOnRhythm = true;
 
         /// <summary>
+        /// A walk at least <see cref="HeadTilt.YoungWalk"/> old rides out a window the gate's regression refuses by less than
+        /// this (log-odds) as one the head's rhythm holds (<see cref="HoldOnRhythm"/>): the model decides as if the gate had
+        /// passed it. Slow, calm walkers sit just under the gate's boundary (held-out clips made slow, their refused walking
+        /// windows: log-odds median -0.8; the glasses' still activities' refused windows about -5), and the rhythm's test
+        /// (the head swaying back each step) fails on walkers who hardly sway, so runs of near misses ended their walks
+        /// mid-stride. A walk never starts on one, and a younger walk (most of the still activities' false walks) is not held:
+        /// held from the start, picking things up on the glasses showed walking 1.5 to 1.9 %. 0 turns it off; the SVM holds
+        /// at 2 (<see cref="SvmClassifier.DefaultFilter"/>, the measurements log).
+        /// </summary>
+        public double NarrowRefusalLogOdds = 0;
+
+        /// <summary>
         /// Most the head's tilt may have moved over the newest <see cref="HeadTilt.Span"/> seconds for a walk to start
         /// (degrees; the shared step clock's limit, <see cref="StepClockSettings.MaxStartTiltChange"/>): while it moves more,
         /// a window is standing whatever the model and the gate say. Bending down to pick something up and straightening
