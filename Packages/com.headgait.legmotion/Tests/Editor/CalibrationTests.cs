@@ -635,7 +635,8 @@ namespace HeadGait.Tests
             wearer.VerticalAmplitude *= 0.35;
             var walk = AnkleLabelledWalk(1, 1.4, 0.35, 8);
             Assert.That(PhaseEvents.TruthSteps(walk).Count, Is.LessThan(settings.CorThresholdSteps), "a short walk");
-            var opened = WearerAdaptation.Fit(Shipped, new[] { walk }, "slow", WearerProfile.FromFootReferences, settings).Correlation;
+            var openedProfile = WearerAdaptation.Fit(Shipped, new[] { walk }, "slow", WearerProfile.FromFootReferences, settings);
+            var opened = openedProfile.Correlation;
             settings.CorGate = false;
             var closed = WearerAdaptation.Fit(Shipped, new[] { walk }, "slow", WearerProfile.FromFootReferences, settings).Correlation;
             Assert.That(opened.WalkingGateHoldShift, Is.GreaterThan(0).And.LessThanOrEqualTo(WearerProfile.MaxCorGateShift), "COR's gate opened for walks in progress, within its bound");
@@ -644,7 +645,10 @@ namespace HeadGait.Tests
             var standing = Enumerable.Range(0, 3).Select(k => WalkingStreamGenerator.Generate("stand" + k, wearer, new StreamScript().Stand(20, 0.5 + 0.5 * k), 500UL + (ulong)k)).ToList();
             double Shown(CorrelationTemplate c) => GaitMetrics.Pool(standing.Select(r => ReplayEvaluator.Run(r, new CorrelationClassifier(c)).ClassifierMetrics)).StandingAsWalking;
             Assert.That(Shown(opened), Is.LessThanOrEqualTo(Shown(Shipped.Correlation)), "standing with head movement shown as walking");
-            Assert.That(CorrelationTemplate.Parse(opened.Serialize()).WalkingGateHoldShift, Is.EqualTo(opened.WalkingGateHoldShift), "kept through save and load");
+            Assert.That(WearerProfile.Parse(openedProfile.Serialize(), "slow.profile.txt").Correlation.WalkingGateHoldShift, Is.EqualTo(opened.WalkingGateHoldShift), "kept through the profile's save and load");
+            openedProfile.Correlation = opened.With(walkingGateHoldShift: WearerProfile.MaxCorGateShift + 0.5);
+            var e = Assert.Throws<FormatException>(() => WearerProfile.Parse(openedProfile.Serialize(), "slow.profile.txt"), "a profile opening COR's gate past its bound");
+            Assert.That(e.Message, Does.Contain("slow.profile.txt").And.Contain("walking_gate_hold_shift"));
 
             var barely = AnkleLabelledWalk(3, 1.4, 0.45, 8);
             settings.CorGate = true;

@@ -335,6 +335,7 @@ namespace HeadGait.Calibration
         {
             if (!IsValidWearer(Wearer)) throw new FormatException($"{source}: wearer '{Wearer}' is not 1-64 letters, digits, '-', '_' or '.'");
             if (Source != FromFootReferences && Source != SelfSupervised) throw new FormatException($"{source}: source '{Source}' is neither {FromFootReferences} nor {SelfSupervised}");
+            if (Correlation != null && Correlation.WalkingGateHoldShift > MaxCorGateShift) throw new FormatException($"{source}: cor.walking_gate_hold_shift {Correlation.WalkingGateHoldShift} is outside 0..{MaxCorGateShift}");
             if (!(LearnedGateShift >= 0 && LearnedGateShift <= MaxLearnedGateShift)) throw new FormatException($"{source}: learned_gate_shift {LearnedGateShift} is outside 0..{MaxLearnedGateShift}");
             if (!(LearnedGain >= MinLearnedGain && LearnedGain <= MaxLearnedGain)) throw new FormatException($"{source}: learned_gain {LearnedGain} is outside {MinLearnedGain}..{MaxLearnedGain}");
             if (!(LearnedTimeScale >= MinLearnedTimeScale && LearnedTimeScale <= MaxLearnedTimeScale)) throw new FormatException($"{source}: learned_time_scale {LearnedTimeScale} is outside {MinLearnedTimeScale}..{MaxLearnedTimeScale}");
