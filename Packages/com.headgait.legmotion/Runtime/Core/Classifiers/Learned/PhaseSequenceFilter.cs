@@ -144,7 +144,7 @@ namespace HeadGait
         /// shown in phase. The models' filtered belief flickers to standing within a walk's first windows: each flicker was
         /// a start the avatar began and dropped before the lead foot landed, and most of the still activities' false walks
         /// are that short. Real glasses (`realworld`, avatar; in-sample), SVM / BLSTM with <see cref="YoungWalkStandingWeight"/>:
-        /// see the measurements log. 0 shows every walk at once.
+        /// see the measurements log. 0 shows every walk at once. The BLSTM waits 0.25 s (<see cref="BlstmClassifier.DefaultFilter"/>).
         /// </summary>
         public double FreshWalkShownAfter = 0.15;
 
