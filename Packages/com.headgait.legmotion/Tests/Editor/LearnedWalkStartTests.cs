@@ -65,6 +65,48 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
+        /// A gesture made standing, as the SVM saw the style-CV clip bn1 *guide active*: a false walk 0.5 s into the stream
+        /// (shown at once, within <see cref="PhaseFilterSettings.FreshWalkGap"/> of the stream's start) that ends within
+        /// 0.3 s, then another 0.5 s later, shorter than <see cref="PhaseFilterSettings.FreshWalkShownAfter"/>. With
+        /// <see cref="PhaseFilterSettings.ShortWalkGivesNoCredit"/> (the SVM's) the first walk gives the second no credit
+        /// and spends the stream start's, so the second is fresh and never shown; without it, shown at once. A walk shown
+        /// for over half a second still gives the next one credit.
+        /// </summary>
+        [Test]
+        public void AShortFalseWalkGivesTheNextNoCredit()
+        {
+            var models = Models;
+            var shipped = Settings("svm", true);
+            Assert.That(shipped.ShortWalkGivesNoCredit, Is.True, "the SVM ships the rule");
+            int flicker = (int)Math.Floor(shipped.FreshWalkShownAfter * 100) - 1; // windows, fewer than the hidden time
+            // Walks as [from, to) in 10-ms windows: two false ones, a real walk of 1 s, and a flicker within the gap after it.
+            var walks = new[] { (50, 80), (130, 130 + flicker), (200, 300), (400, 400 + flicker) };
+            bool[] Shown(bool rule)
+            {
+                var settings = Settings("svm", true);
+                settings.ShortWalkGivesNoCredit = rule;
+                var c = Create(models, "svm", settings);
+                var outputs = new double[c.OutputCount];
+                var shown = new bool[600];
+                for (int i = 0; i < shown.Length; i++)
+                {
+                    bool walking = walks.Any(w => i >= w.Item1 && i < w.Item2);
+                    SureOutputs.Write(c, walking ? 0 : c.Segments.StandingClass, outputs);
+                    shown[i] = c.ClassifyScored(outputs, 0, 0.01 * i, 100, walking ? GateVerdict.Passes : GateVerdict.Refuses).IsWalking;
+                }
+                return shown;
+            }
+            bool ShownIn(bool[] shown, (int From, int To) w) => shown.Skip(w.From).Take(w.To - w.From + 5).Any(x => x);
+            var without = Shown(false);
+            var with = Shown(true);
+            Assert.That(ShownIn(without, walks[0]) && ShownIn(with, walks[0]), Is.True, "the first false walk, near the stream's start, shows at once either way");
+            Assert.That(ShownIn(without, walks[1]), Is.True, "without the rule the first false walk's credit shows the second at once");
+            Assert.That(ShownIn(with, walks[1]), Is.False, "with it the second is fresh, and dropped before it is due to show");
+            Assert.That(ShownIn(with, walks[2]), Is.True, "a real walk shows once it has lasted");
+            Assert.That(ShownIn(with, walks[3]), Is.True, "a walk shown for over half a second gives the next one credit");
+        }
+
+        /// <summary>
         /// A model that walks a generated walker's stride (its segments in order, 1.1-s stride) from <see cref="WalkFrom"/>
         /// on, but stands between <see cref="FlickerFrom"/> and <see cref="FlickerTo"/>: the learned models' belief turning to
         /// standing early in a walk, before the head's rhythm can hold it.

@@ -52,6 +52,7 @@ namespace HeadGait
         double walkStartTime = double.NaN;
         double lastShownWalk = double.NaN; // when a walking prediction was last shown (PhaseFilterSettings.FreshWalkShownAfter)
         double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
+        double shownWalkSince = double.NaN; // when the walk going on was first shown; NaN while none is (PhaseFilterSettings.ShortWalkGivesNoCredit)
         ThresholdClassifier stepClock;     // THR on the model's gate (PhaseFilterSettings.WalkOnStepClock); made on first use
         double stepClockTime = double.NaN; // end of the last window it read
         double stepClockWalkingSince = double.NaN; // when its walk going on began; NaN while it stands
@@ -312,6 +313,7 @@ namespace HeadGait
             still.Reset();
             lastShownWalk = double.NaN;
             lastSurePass = double.NaN;
+            shownWalkSince = double.NaN;
             ownWalkingShare = 0;
         }
 
@@ -390,24 +392,26 @@ namespace HeadGait
                 TakeOutputs(rowOutputs, 0);
             }
             var reading = Read(window);
-            return Decide(reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks);
+            return Decide(reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk);
         }
 
         /// <summary>
         /// What the classifier reads of a window besides the model's outputs, for <see cref="ClassifyScored(double[], int, in WindowReading)"/>
         /// to decide it later: its time and rate, the gate's verdict (<see cref="JudgeGate"/>), the head's tilt
         /// (<see cref="ReadTilt"/>), the rhythm's step period the gate read (<see cref="RhythmPeriod"/>), whether THR's step
-        /// clock walks (<see cref="FollowStepClock"/>).
+        /// clock walks (<see cref="FollowStepClock"/>), and whether it shows a walk at all, settled or not
+        /// (<see cref="PhaseFilterSettings.ShortWalkGivesNoCredit"/>).
         /// </summary>
         public readonly struct WindowReading
         {
             public readonly double Time, SampleRate, RhythmPeriod;
             public readonly GateVerdict Gate;
             public readonly HeadTiltReading Tilt;
-            public readonly bool StepClockWalks;
+            public readonly bool StepClockWalks, StepClockShowsWalk;
 
-            public WindowReading(double time, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmPeriod, bool stepClockWalks)
+            public WindowReading(double time, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmPeriod, bool stepClockWalks, bool stepClockShowsWalk)
             {
+                StepClockShowsWalk = stepClockShowsWalk;
                 Time = time;
                 SampleRate = sampleRate;
                 Gate = gate;
@@ -422,7 +426,8 @@ namespace HeadGait
         {
             var gate = JudgeGate(window); // reads the rhythm's step period too
             var tiltReading = ReadTilt(window);
-            return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, FollowStepClock(window));
+            bool walks = FollowStepClock(window);
+            return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, walks, !double.IsNaN(stepClockWalkingSince));
         }
 
         /// <summary>
@@ -525,17 +530,18 @@ namespace HeadGait
         /// <see cref="ILearnedEvaluator.Evaluate"/> writes them for <see cref="StandardiseRows"/>' rows). Call it for the windows in
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tilt"/>: what
         /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
-        /// <see cref="JudgeGate"/> judged it (0: none); <paramref name="stepClockWalks"/>: what <see cref="FollowStepClock"/> returned for it.
+        /// <see cref="JudgeGate"/> judged it (0: none); <paramref name="stepClockWalks"/>: what <see cref="FollowStepClock"/> returned for it; <paramref name="stepClockShowsWalk"/>: whether
+        /// THR's step clock showed a walk at it, settled or not (<see cref="WindowReading.StepClockShowsWalk"/>).
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0, bool stepClockWalks = false)
+        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0, bool stepClockWalks = false, bool stepClockShowsWalk = false)
         {
             TakeOutputs(batchOutputs, row * WindowOutputCount);
-            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod, stepClockWalks);
+            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod, stepClockWalks, stepClockShowsWalk);
         }
 
         /// <summary>The window <see cref="Read"/> read, its outputs row <paramref name="row"/> of <paramref name="batchOutputs"/> (see the overload above).</summary>
         public GaitPrediction ClassifyScored(double[] batchOutputs, int row, in WindowReading reading)
-            => ClassifyScored(batchOutputs, row, reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks);
+            => ClassifyScored(batchOutputs, row, reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk);
 
         /// <summary>
         /// The wearer's probabilities, which pick the walking class (<see cref="Decide"/>): with their output shifts
@@ -560,7 +566,7 @@ namespace HeadGait
         bool IsYoung(double now) => WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
 
         /// <summary>From the window's outputs (in <see cref="outputs"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod, bool stepClockWalks)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod, bool stepClockWalks, bool stepClockShowsWalk)
         {
             ClassScores(outputs, scores);
             ToProbabilities(scores, probabilities);
@@ -643,6 +649,7 @@ namespace HeadGait
             }
             if (best == Segments.StandingClass)
             {
+                if (WasWalking) EndShownWalk(stepClockShowsWalk);
                 lastClass = best;
                 lastContactTime = double.NaN;
                 return GaitPrediction.Standing(now, p[best]);
@@ -662,6 +669,7 @@ namespace HeadGait
             lastPosition = PhaseMap.Wrap(s);
             if (TooFreshToShow(now)) return GaitPrediction.Standing(now, p[Segments.StandingClass]);
             lastShownWalk = now;
+            if (double.IsNaN(shownWalkSince)) shownWalkSince = now;
             double shownPeriod = filter != null && filter.Settings.PeriodFromRhythm && rhythmStepPeriod > 0 ? rhythmStepPeriod : stepPeriod;
             return GaitPrediction.Walking(now, s, shownPeriod, p[best], Segments.Left(best), Segments.Right(best));
         }
@@ -714,6 +722,18 @@ namespace HeadGait
         bool TooFreshToShow(double now)
             => filter != null && now - walkStartTime < filter.Settings.FreshWalkShownAfter && !(lastSurePass >= walkStartTime)
                && !(now - lastShownWalk < filter.Settings.FreshWalkGap);
+
+        /// <summary>
+        /// A walk ends: one shown for less than <see cref="HeadTilt.YoungWalk"/> leaves the next walk no credit (nor the
+        /// stream's start any) where <see cref="PhaseFilterSettings.ShortWalkGivesNoCredit"/> says so, unless THR's step clock
+        /// shows a walk as it ends (<paramref name="stepClockShowsWalk"/>).
+        /// </summary>
+        void EndShownWalk(bool stepClockShowsWalk)
+        {
+            if (filter != null && filter.Settings.ShortWalkGivesNoCredit && !stepClockShowsWalk && lastShownWalk - shownWalkSince < HeadTilt.YoungWalk)
+                lastShownWalk = double.NaN;
+            shownWalkSince = double.NaN;
+        }
 
         /// <summary>The walking class of highest probability (ties to the lower class).</summary>
         int MostLikelyWalking(double[] p)

@@ -157,6 +157,17 @@ namespace HeadGait
         public double FreshWalkGap = 3;
 
         /// <summary>
+        /// A walk shown for less than <see cref="HeadTilt.YoungWalk"/> gives the next walk no credit for
+        /// <see cref="FreshWalkGap"/> (it is fresh, <see cref="FreshWalkShownAfter"/>), and spends the stream start's: a gesture
+        /// made standing showed a string of short walks each shown at once, as the first came within the gap of the stream's
+        /// start and each the next one's credit. A short walk that ends while THR's step clock (on the model's gate) shows a
+        /// walk keeps the credit: without that exception the glasses' walking lost 0.6 point, as a real bout's first short
+        /// walks were held back too. The SVM sets it (<see cref="SvmClassifier.DefaultFilter"/>, the measurements log);
+        /// false: any shown walk gives credit.
+        /// </summary>
+        public bool ShortWalkGivesNoCredit = false;
+
+        /// <summary>
         /// Weight of the model's standing probability in a window the gate passes while the walk is younger than
         /// <see cref="HeadTilt.YoungWalk"/> (a window the gate is sure of weighs it <see cref="SureWalkingStandingWeight"/>):
         /// the young walks the models drop within their first half second are the rest of their extra fragments. Alone it shows
