@@ -541,6 +541,28 @@ namespace HeadGait.Tests
             double Shown(CorrelationSettings s) => GaitMetrics.Pool(gestures.Select(r => ReplayEvaluator.Run(r, new CorrelationClassifier(template, s)).ClassifierMetrics)).StandingAsWalking;
             Assert.That(Shown(shipped), Is.LessThanOrEqualTo(Shown(unstretched)));
         }
+
+        [Test]
+        public void AWeakPeakInsideTheStandingSearchsWindowDoesNotKeepAWavesFalseWalkGoing()
+        {
+            // A waving clip (bn1 *byebye active*) at the threshold its held-out style's fold chose (0.74): the standing search
+            // started a walk at 2.45 s, dating its step's contact 0.74 s back (before its window), and a weak peak inside that
+            // window (r 0.68, taken on the tracking margin as due) kept the walk shown 0.6 s longer (251 samples shown walking).
+            var template = Shipped.Correlation;
+            var waving = RealClip("bn1_byebye_active_001");
+            double Shown(bool weakContactsInStartWindow)
+            {
+                var m = ReplayEvaluator.Run(waving, new CorrelationClassifier(template, new CorrelationSettings { MinCorrelationOverride = 0.74, WeakContactsInStartWindow = weakContactsInStartWindow })).ClassifierMetrics;
+                return m.StandingAsWalking * m.StandingSamples;
+            }
+            double refused = Shown(false), taken = Shown(true);
+            Assert.That(refused, Is.LessThan(220));
+            Assert.That(refused, Is.LessThan(taken - 40));
+            // Walks, as recorded and made slow, are classified as well as before.
+            var walks = new[] { RealClip("bn_tr_fem_001"), RealClip("bn_wk_mas_018"), Training.RecordingAugmentation.Slow(RealClip("bn_tr_mas_008")) };
+            double Wrong(bool weak) => GaitMetrics.Pool(walks.Select(r => ReplayEvaluator.Run(r, new CorrelationClassifier(template, new CorrelationSettings { MinCorrelationOverride = 0.74, WeakContactsInStartWindow = weak })).ClassifierMetrics)).MisclassificationRate;
+            Assert.That(Wrong(false), Is.LessThanOrEqualTo(Wrong(true) + 0.005));
+        }
     }
 
     public class StepClockTests
