@@ -115,9 +115,9 @@ namespace HeadGait.Calibration
         public bool LearnedChannelGains;
         /// <summary>
         /// With <see cref="LearnedRefit"/>, search the SVM's input channels' gains (the BLSTM's only with <see cref="LearnedChannelGains"/>).
-        /// Style CV, SVM, ankle trackers (in-sample as a choice): pooled 21.0 to 16.8 % without, 16.6 % with; the slowest two
-        /// styles bn1 *feminine* -4.59 to -4.74 and *giant* -1.07 to -1.82 points against uncalibrated, gestures and bows shown
-        /// as walking never more (pooled 0.8 to 0.7 %), no style worse than uncalibrated (bn1 *active* gains 1.6 instead of 4.0).
+        /// Style CV, SVM, ankle trackers (in-sample as a choice): pooled 21.0 to 16.8 % without, 16.4 % with; the slowest two
+        /// styles bn1 *feminine* -4.59 to -4.83 and *giant* -1.07 to -2.04 points against uncalibrated, gestures and bows shown
+        /// as walking never more (pooled 0.8 to 0.6 %), no style worse than uncalibrated (bn1 *active* gains 1.3 instead of 4.0).
         /// The generated calm wearer's head movement that kept <see cref="LearnedChannelGains"/> off was the BLSTM's.
         /// </summary>
         public bool SvmChannelGains = true;
