@@ -32,7 +32,7 @@ namespace HeadGait.Cli
 
         static Option<string> AdaptOption() => new Option<string>("--adapt")
         {
-            Description = "what to refit, on top of the defaults: cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, open-labels, fill-missed (no-X: off), prior=STEPS, margin=SHARE, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; self: or feet: for one source",
+            Description = "what to refit, on top of the defaults: cor-template, cor-threshold, cor-lead, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, svm-channels, learned-search, open-labels, fill-missed (no-X: off), prior=STEPS, margin=SHARE, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; self: or feet: for one source",
         };
 
         static Command Fit()

@@ -141,8 +141,8 @@ namespace HeadGait.Cli
                         (clf, v, variantModels[v].Create(clf, out string warning) is var c && warning == null ? ReplayEvaluator.Run(rec, c).ClassifierMetrics : null))).ToList())).Concat(scored))
                         foreach (var group in metrics.Where(m => m.Item3 != null).GroupBy(m => m.clf))
                             Console.WriteLine($"    {rec.Name,-32} {group.Key,-5} " + string.Join("  ", group.Select(m => string.Format(CultureInfo.InvariantCulture,
-                                "{0} {1:F1} % (walking shown standing {2:F1}, contacts {3:+0;-0} ms, right foot {4:F0} %)", Variants[m.v], 100 * m.Item3.MisclassificationRate,
-                                100 * m.Item3.WalkingAsStanding, m.Item3.StepTimingMedianMs, 100 * m.Item3.StepRightFoot))));
+                                "{0} {1:F1} % (walking shown standing {2:F1}, beyond adjacent {5:F1}, contacts {3:+0;-0} ms, right foot {4:F0} %, {6} walking samples)", Variants[m.v], 100 * m.Item3.MisclassificationRate,
+                                100 * m.Item3.WalkingAsStanding, m.Item3.StepTimingMedianMs, 100 * m.Item3.StepRightFoot, 100 * m.Item3.MisclassificationBeyondAdjacent, m.Item3.WalkingSamples))));
             }
             Print(cells, cadence, names);
             foreach (var n in notes) Console.WriteLine("note: " + n);
@@ -245,6 +245,7 @@ namespace HeadGait.Cli
                             case "learned-gain": a.LearnedGain = on; break;
                             case "learned-refit": a.LearnedRefit = on; break;
                             case "learned-channels": a.LearnedChannelGains = on; break;
+                            case "svm-channels": a.SvmChannelGains = on; break;
                             case "learned-search": a.LearnedShiftSearch = on; break;
                             case "learned-time-scale": a.LearnedTimeScale = on; break;
                             case "time-scale-up": a.LearnedTimeScaleUpward = on; break;
@@ -252,7 +253,7 @@ namespace HeadGait.Cli
                             case "fill-missed": a.FillMissedSteps = on; break;
                             case "cor-fuller": a.PreferFullerCorRefit = on; break;
                             case "still-check": a.StillCheck = on; break;
-                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, cor-gate, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, learned-search, learned-time-scale, time-scale-up, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, time-scale-share=SHARE, prior=STEPS, margin=SHARE, short-margin=SHARE, cor-margin=SHARE, cor-gate-cap=LOGODDS, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
+                            default: throw new UsageException($"--adapt: unknown part '{raw}' (cor-template, cor-threshold, cor-lead, cor-gate, thr, gates, learned-gate, learned-gain, learned-refit, learned-channels, svm-channels, learned-search, learned-time-scale, time-scale-up, open-labels, fill-missed, cor-fuller, still-check, still-slack=SECONDS, time-scale-share=SHARE, prior=STEPS, margin=SHARE, short-margin=SHARE, cor-margin=SHARE, cor-gate-cap=LOGODDS, own-templates=N, fill-below=N, template-steps=N, threshold-steps=N, gate-cap=LOGODDS, learned-gate-cap=LOGODDS, shift-cap=SHIFT, shift-prior=WEIGHT, search-cap=SHIFT; no- turns one off; self: or feet: for one source)");
                         }
                 }
             }
@@ -266,7 +267,7 @@ namespace HeadGait.Cli
         {
             a.CorTemplate ? "cor-template" : null, a.CorThreshold ? "cor-threshold" : a.CorThresholdSteps < int.MaxValue ? $"cor-threshold from {a.CorThresholdSteps} steps" : null, a.CorLead ? "cor-lead" : null,
             a.Threshold ? $"thr(prior {a.ThresholdPriorSteps:0})" : null, a.DetectorGates ? "gates" : null, a.CorGate ? $"cor-gate ({(a.CorGateWhileWalking ? "walks in progress, " : "")}at most {a.MaxCorGateShift:0.##})" : null, a.LearnedGate ? "learned-gate" : null, a.DetectorGates || a.LearnedGate ? $"(gates opened by at most {a.MaxGateShift:0.##}, the learned models' {a.MaxLearnedGateShift:0.##})" : null,
-            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : null, a.LearnedTimeScale ? $"learned-time-scale ({(a.LearnedTimeScaleUpward ? "" : "quicker wearers only, ")}share {a.LearnedTimeScaleShare:0.##})" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", $"(COR {a.CorAcceptMargin:0.###}{(double.IsNaN(a.ShortWalkMargin) ? "" : $", {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps")})", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
+            a.LearnedGain ? "learned-gain" : null, a.LearnedRefit ? "learned-refit" : null, a.LearnedChannelGains ? "learned-channels" : a.LearnedRefit && a.SvmChannelGains ? "svm-channels" : null, a.LearnedTimeScale ? $"learned-time-scale ({(a.LearnedTimeScaleUpward ? "" : "quicker wearers only, ")}share {a.LearnedTimeScaleShare:0.##})" : null, a.LearnedRefit && a.LearnedShiftSearch ? $"learned-search (cap {a.LearnedSearchCap:0.##})" : null, a.LabelWithGateOpen ? "open-labels" : null, a.FillMissedSteps ? (a.FillMissedBelowSteps > 0 ? $"fill-missed (below {a.FillMissedBelowSteps} sure steps)" : "fill-missed") : null, a.PreferFullerCorRefit ? "cor-fuller" : null, a.StillCheck ? $"still-check (slack {a.StillSlack:0.##} s)" : null, $"own-templates {a.CorOwnTemplates}", $"margin {a.AcceptMargin:0.###}", $"(COR {a.CorAcceptMargin:0.###}{(double.IsNaN(a.ShortWalkMargin) ? "" : $", {a.ShortWalkMargin:0.###} on a walk of under {a.CorThresholdSteps} steps")})", a.LearnedRefit ? $"(output shifts at most {a.LearnedShiftCap:0.##}, prior {a.LearnedShiftPrior:0.###})" : null,
         }.Where(x => x != null));
 
         /// <summary>What a profile changed against the fold's models, in a few words.</summary>

@@ -327,6 +327,29 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void TheSvmsChannelGainsFitAWearerWhoseSwayIsUnlikeTheTrainingWalkers()
+        {
+            // A calm generated wearer swaying sideways twice as far as the generator's walkers: with ankle trackers the SVM's
+            // input channels' gains are searched (AdaptationSettings.SvmChannelGains; the BLSTM's stay off), and they classify
+            // the wearer's other walk better than the profile fitted without them.
+            var wearer = Wearer();
+            wearer.LateralAmplitude *= 2;
+            var walk = Walk(wearer);
+            var models = ShippedWithSvmOnly;
+            var session = AnkleSession(walk);
+            var withGains = session.Fit(models, "swaying-wearer");
+            var without = WearerAdaptation.Fit(models, new[] { session.Labelled() }, "swaying-wearer", WearerProfile.FromFootReferences, new AdaptationSettings { SvmChannelGains = false });
+            Assert.That(withGains.AdjustmentFor(SvmClassifier.Kind).ChannelGain, Has.Some.Not.EqualTo(1.0), "a channel's gain is fitted");
+            Assert.That(without.AdjustmentFor(SvmClassifier.Kind)?.ChannelGain ?? new[] { 1.0 }, Has.All.EqualTo(1.0));
+            var other = WalkingStreamGenerator.Generate("other-walk", wearer, new StreamScript().Stand(2).Walk(20, Foot.Right).Stand(1).Walk(20, Foot.Left, -30).Stand(2), 911);
+            double Misclassified(GaitModels m) => ReplayEvaluator.Run(other, m.Create("svm", out _)).ClassifierMetrics.MisclassificationRate;
+            double gains = Misclassified(withGains.Apply(models)), noGains = Misclassified(without.Apply(models)), shippedOnly = Misclassified(models);
+            string figures = $"with channel gains {gains:P1} ({string.Join("/", withGains.AdjustmentFor(SvmClassifier.Kind).ChannelGain)}), without {noGains:P1}, shipped {shippedOnly:P1}";
+            TestContext.WriteLine(figures);
+            Assert.That(gains, Is.LessThan(noGains), figures);
+        }
+
+        [Test]
         public void ADamagedLearnedAdjustmentIsRefusedNamingTheFile()
         {
             var walk = Walk(Wearer());
