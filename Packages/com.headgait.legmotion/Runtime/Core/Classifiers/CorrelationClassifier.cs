@@ -328,7 +328,7 @@ namespace HeadGait
             clock.FollowRhythm(window, template.Gate.LevelTolerance);
             bool passes = template.Gate.Passes(window, out double gateLogOdds);
             // A wearer's profile may open the gate for a walk in progress (CorrelationTemplate.WalkingGateHoldShift): never for a start.
-            if (!passes && template.WalkingGateHoldShift > 0 && clock.IsWalking(now)) passes = gateLogOdds + template.WalkingGateHoldShift > 0;
+            if (!passes && template.WalkingGateHoldShift > 0 && clock.IsWalking(now)) passes = WalkingGate.ScorePasses(gateLogOdds + template.WalkingGateHoldShift);
             bool moving = passes && !clock.StartBlocked(now, gateLogOdds) || clock.HeldByRhythm(now);
             bool firstStep = !moving && clock.MayStartOnFirstStep(now, gateLogOdds);
             stillWindows = moving || firstStep ? 0 : stillWindows + 1;

@@ -129,8 +129,11 @@ namespace HeadGait
         public bool Passes(SignalWindow window, out double logOdds)
         {
             logOdds = Score(window);
-            return logOdds > 0 || (usesStepRhythm && StepRhythm.Of(window, levelTolerance).IsWalking);
+            return ScorePasses(logOdds) || (usesStepRhythm && StepRhythm.Of(window, levelTolerance).IsWalking);
         }
+
+        /// <summary>Whether a window of log-odds <paramref name="logOdds"/> (<see cref="Score"/>, plus any opening a wearer's profile adds) passes on its score.</summary>
+        public static bool ScorePasses(double logOdds) => logOdds > 0;
 
         /// <summary>
         /// The gate's inputs for the newest 50 samples (or fewer right after a restart). With <paramref name="levelTolerance"/>
