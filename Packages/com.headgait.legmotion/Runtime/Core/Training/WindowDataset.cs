@@ -22,6 +22,9 @@ namespace HeadGait.Training
             /// <summary>Index of the original recording (augmented copies share it, so folds keep them together).</summary>
             public int FileIndex;
 
+            /// <summary>Every n-th window of this recording is exported; 0: the export's own stride.</summary>
+            public int Stride;
+
             /// <summary>An augmented copy: trained on, never scored.</summary>
             public bool Augmented;
 
@@ -63,11 +66,12 @@ namespace HeadGait.Training
                     var pre = new StreamPreprocessor(new PreprocessorSettings { WindowLength = features.Samples });
                     var labels = new LabelCursor(rec);
                     long produced = 0;
+                    int every = item.Stride > 0 ? item.Stride : stride;
                     foreach (var s in rec.Samples)
                     {
                         pre.Push(s.Imu, w =>
                         {
-                            if (produced++ % stride != 0) return;
+                            if (produced++ % every != 0) return;
                             if (!labels.TryLabelsAt(w.EndTime + labelLead, out var truth)) return;
                             int cls = segments.ClassOf(truth.Left, truth.Right);
                             features.Extract(w, buffer);
