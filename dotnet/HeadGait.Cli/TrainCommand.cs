@@ -43,11 +43,12 @@ namespace HeadGait.Cli
             var wearer = new Option<int>("--wearer-copies") { Description = "copies of each walking recording made slow and calm like a real headset wearer, for the learned classifiers", DefaultValueFactory = _ => GaitTraining.DefaultWearerCopies };
             var wearerRanges = new Option<string>("--wearer-ranges") { Description = "ranges of the wearer-like copies: narrow (the shipped models') or wide (slower and calmer walkers too)", DefaultValueFactory = _ => "narrow" };
             var realStill = new Option<int>("--real-still-stride") { Description = "also export every n-th window of --real's standing, sitting and picking-up recordings as standing for the learned classifiers (0: none)", DefaultValueFactory = _ => 0 };
+            var realNear = new Option<double>("--real-still-near") { Description = "with --real-still-stride: only the still windows the package's shipped SVM walking gate passes or refuses by less than this (log-odds; 0: every window)", DefaultValueFactory = _ => 0 };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
                 data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, wearer, features, stride, lead, work, python, pythonArgs, exportOnly, real,
-                wearerRanges, realStill,
+                wearerRanges, realStill, realNear,
             };
             command.SetAction(parse =>
             {
@@ -111,7 +112,9 @@ namespace HeadGait.Cli
                 var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
                 var wearerLike = GaitTraining.WearerCopies(recordings, wearerCopies, wearerSettings);
                 var items = training.Concat(wearerLike).Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
-                items.AddRange(still.Select(r => { var item = Item(r, false); item.Stride = stillEvery; return item; }));
+                double near = OptionValues.Number(parse.GetValue(realNear), "--real-still-near", 0, 100);
+                var nearGate = near > 0 ? ShippedSvmGate() : null;
+                items.AddRange(still.Select(r => { var item = Item(r, false); item.Stride = stillEvery; item.NearGate = nearGate; item.NearLogOdds = near; return item; }));
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), every, workDir, leadSeconds);
                 if (still.Count > 0) Console.WriteLine($"also exported every {stillEvery}th window of {still.Count} still real recordings as standing");
                 Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {wearerLike.Count} wearer-like copies, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
@@ -150,6 +153,15 @@ namespace HeadGait.Cli
                 return 0;
             });
             return command;
+        }
+
+        /// <summary>The walking gate of the package's shipped SVM (<see cref="GaitModels.SvmFile"/>).</summary>
+        static WalkingGate ShippedSvmGate()
+        {
+            string path = Path.Combine(SamplePaths.FindModelsFolder() ?? throw new UsageException("--real-still-near: no package Models/ folder found"), GaitModels.SvmFile);
+            var model = ModelFile.Load(path);
+            if (!model.Values.TryGetValue(WalkingGate.ModelKey, out var text)) throw new UsageException($"{path}: no {WalkingGate.ModelKey} line for --real-still-near");
+            return WalkingGate.Parse(text);
         }
 
         static bool IsLearnedList(string kinds)

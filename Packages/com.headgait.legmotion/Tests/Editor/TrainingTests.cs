@@ -778,7 +778,7 @@ namespace HeadGait.Tests
         }
 
         [Test]
-        public void StillRealRecordingsAreExportedAsStandingAtTheirOwnStride()
+        public void StillRealRecordingsAreExportedAsStandingAtTheirOwnStrideAndNearTheGateOnly()
         {
             string dir = Path.Combine(Path.GetTempPath(), "headgait-export-" + Guid.NewGuid().ToString("N"));
             try
@@ -805,6 +805,17 @@ namespace HeadGait.Tests
                 for (long i = own; i < own + fromStill; i++)
                     Assert.That(BitConverter.ToInt32(y, (int)(128 + 4 * i)), Is.EqualTo(segments.StandingClass), $"window {i}");
                 Assert.That(File.ReadAllText(Path.Combine(dir, "files.tsv")), Does.Contain("1\tp1_e001_standing_pickup"));
+
+                // Near a gate only: one that scores every window -0.5 keeps them all within 1 log-odds, one at -2 none.
+                long Near(double bias)
+                {
+                    var w = new double[WalkingGate.WeightCount];
+                    w[WalkingGate.InputCount] = bias;
+                    var item = new WindowDataset.Item { Recording = still[0], Stride = 12, NearGate = new WalkingGate(w), NearLogOdds = 1 };
+                    return WindowDataset.Export(new[] { item }, new[] { still[0].Name }, WindowFeatures.Parse("samples:50 step:2 channels:smv"), segments, 4, Path.Combine(dir, "near")).Windows;
+                }
+                Assert.That(Near(-0.5), Is.EqualTo(fromStill));
+                Assert.That(Near(-2), Is.Zero);
             }
             finally
             {
