@@ -41,16 +41,24 @@ namespace HeadGait.Cli
             var noStartStop = new Option<bool>("--no-start-stop") { Description = "leave out the BLSTM's copies of each walking recording made into a walk that starts and stops" };
             var real = new Option<string[]>("--real") { Description = "unlabelled real recordings with '# activity=' headers (e.g. ../shared/data/glasses-train) that the walking gates also learn from: walking files where the signal keeps a step rhythm, standing, sitting and picking up as standing", AllowMultipleArgumentsPerToken = true };
             var wearer = new Option<int>("--wearer-copies") { Description = "copies of each walking recording made slow and calm like a real headset wearer, for the learned classifiers", DefaultValueFactory = _ => GaitTraining.DefaultWearerCopies };
+            var wearerRanges = new Option<string>("--wearer-ranges") { Description = "ranges of the wearer-like copies: narrow (the shipped models') or wide (slower and calmer walkers too)", DefaultValueFactory = _ => "narrow" };
+            var realStill = new Option<int>("--real-still-stride") { Description = "also export every n-th window of --real's standing, sitting and picking-up recordings as standing for the learned classifiers (0: none)", DefaultValueFactory = _ => 0 };
+            var realNear = new Option<double>("--real-still-near") { Description = "with --real-still-stride: only the still windows the package's shipped SVM walking gate passes or refuses by less than this (log-odds; 0: every window)", DefaultValueFactory = _ => 0 };
             var pythonArgs = new Option<string>("--python-args") { Description = "extra arguments for training/train_learned.py (e.g. \"--hidden 48 --epochs 16\")", DefaultValueFactory = _ => "" };
             var command = new Command("train", "Trains THR, COR, SVM and BLSTM from labelled recordings into one model folder.")
             {
                 data, output, augment, learned, cv, cvModels, cvOnly, resume, noStartStop, wearer, features, stride, lead, work, python, pythonArgs, exportOnly, real,
+                wearerRanges, realStill, realNear,
             };
             command.SetAction(parse =>
             {
                 int copies = OptionValues.Count(parse.GetValue(augment), "--augment", 0, GaitTraining.MaxAugmentedCopies);
                 int wearerCopies = OptionValues.Count(parse.GetValue(wearer), "--wearer-copies", 0, GaitTraining.MaxAugmentedCopies);
                 int every = OptionValues.Count(parse.GetValue(stride), "--stride", 1, 1000);
+                int stillEvery = OptionValues.Count(parse.GetValue(realStill), "--real-still-stride", 0, 1000);
+                string ranges = parse.GetValue(wearerRanges);
+                var wearerSettings = ranges == "narrow" ? new WearerSettings() : ranges == "wide" ? WearerSettings.Wide()
+                    : throw new UsageException($"--wearer-ranges must be narrow or wide, not '{ranges}'");
                 double leadSeconds = OptionValues.Number(parse.GetValue(lead), "--label-lead", -1, 1);
                 var schemeList = parse.GetValue(cv) == null ? new List<string>() : OptionValues.Schemes(parse.GetValue(cv), "--cv", allowNone: false);
                 string kinds = parse.GetValue(learned);
@@ -69,6 +77,7 @@ namespace HeadGait.Cli
                 if (onlyFolds && schemeList.Count == 0) throw new UsageException("--cv-only needs --cv");
                 var realPaths = parse.GetValue(real);
                 var realRecordings = realPaths == null || realPaths.Length == 0 ? null : Inputs.LoadRecordings(Inputs.Expand(realPaths, "*.csv"), false);
+                if (stillEvery > 0 && realRecordings == null) throw new UsageException("--real-still-stride needs --real");
                 var gates = onlyFolds ? default : GaitTraining.TrainGates(training, realRecordings);
                 if (!onlyFolds)
                 {
@@ -92,16 +101,22 @@ namespace HeadGait.Cli
                 }
                 string workDir = parse.GetValue(work) ?? Path.Combine(Path.GetTempPath(), "headgait-train-windows");
                 var spec = WindowFeatures.Parse(parse.GetValue(features));
-                var names = recordings.Select(r => r.Name).ToList();
+                var still = stillEvery > 0 ? GaitTraining.RealStillRecordings(realRecordings) : new List<Recording>();
+                var names = recordings.Select(r => r.Name).Concat(still.Select(r => r.Name)).ToList();
+                if (names.Distinct().Count() != names.Count) throw new UsageException("--real recordings share a name with a labelled one in --data");
                 var index = names.Select((n, i) => (n, i)).ToDictionary(p => p.n, p => p.i);
                 WindowDataset.Item Item(Recording r, bool startsAndStops) => new WindowDataset.Item
                 {
                     Recording = r, FileIndex = index[RecordingAugmentation.OriginalName(r.Name)], Augmented = RecordingAugmentation.IsCopy(r.Name), StartsAndStops = startsAndStops,
                 };
                 var startStop = parse.GetValue(noStartStop) ? new List<Recording>() : GaitTraining.StartStopCopies(recordings);
-                var wearerLike = GaitTraining.WearerCopies(recordings, wearerCopies);
+                var wearerLike = GaitTraining.WearerCopies(recordings, wearerCopies, wearerSettings);
                 var items = training.Concat(wearerLike).Select(r => Item(r, false)).Concat(startStop.Select(r => Item(r, true))).ToList();
+                double near = OptionValues.Number(parse.GetValue(realNear), "--real-still-near", 0, 100);
+                var nearGate = near > 0 ? ShippedSvmGate() : null;
+                items.AddRange(still.Select(r => { var item = Item(r, false); item.Stride = stillEvery; item.NearGate = nearGate; item.NearLogOdds = near; return item; }));
                 var summary = WindowDataset.Export(items, names, spec, new StrideSegments(map), every, workDir, leadSeconds);
+                if (still.Count > 0) Console.WriteLine($"also exported every {stillEvery}th window of {still.Count} still real recordings as standing");
                 Console.WriteLine($"exported {summary.Windows} windows ({spec}) to {workDir}, {wearerLike.Count} wearer-like copies, {startStop.Count} of the recordings also made into walks that start and stop (for the BLSTM); {summary.Unlabelled} windows have a label pair outside the stride segments and are not trained on");
                 if (parse.GetValue(exportOnly)) return 0;
 
@@ -138,6 +153,15 @@ namespace HeadGait.Cli
                 return 0;
             });
             return command;
+        }
+
+        /// <summary>The walking gate of the package's shipped SVM (<see cref="GaitModels.SvmFile"/>).</summary>
+        static WalkingGate ShippedSvmGate()
+        {
+            string path = Path.Combine(SamplePaths.FindModelsFolder() ?? throw new UsageException("--real-still-near: no package Models/ folder found"), GaitModels.SvmFile);
+            var model = ModelFile.Load(path);
+            if (!model.Values.TryGetValue(WalkingGate.ModelKey, out var text)) throw new UsageException($"{path}: no {WalkingGate.ModelKey} line for --real-still-near");
+            return WalkingGate.Parse(text);
         }
 
         static bool IsLearnedList(string kinds)

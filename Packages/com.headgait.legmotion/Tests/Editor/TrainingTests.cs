@@ -380,15 +380,18 @@ namespace HeadGait.Tests
             Assert.That(up / n, Is.LessThan(9.81 * Math.Cos(pitch) + 0.5));
         }
 
-        [Test]
-        public void AWearerLikeCopyWalksAtADrawnCadenceWithDrawnSwayAndKeepsItsSteps()
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AWearerLikeCopyWalksAtADrawnCadenceWithDrawnSwayAndKeepsItsSteps(bool wide)
         {
             // The generated walk's walking part (a copy is made of walks only).
             var whole = TestData.Eval("walk_straight");
             var rec = new Recording(whole.Name, whole.Samples.Where(r => r.HasTruth && r.Left != GaitPhase.Standing && r.Right != GaitPhase.Standing).ToList());
             Assert.That(rec.Samples.Count, Is.GreaterThan(500));
             Assert.That(RecordingAugmentation.LikeWearer(whole, new DeterministicRandom(5)), Is.Null, "a recording that also stands keeps its own size");
-            var settings = new WearerSettings { MaxYawDegrees = 0 };
+            var settings = wide ? WearerSettings.Wide() : new WearerSettings();
+            settings.MaxYawDegrees = 0;
+            if (wide) Assert.That(settings.MinCadence < new WearerSettings().MinCadence && settings.MinVertical < new WearerSettings().MinVertical, Is.True);
             var random = new DeterministicRandom(5);
             for (int copy = 0; copy < 4; copy++)
             {
@@ -767,6 +770,52 @@ namespace HeadGait.Tests
                 string header = System.Text.Encoding.ASCII.GetString(x, 10, 118);
                 Assert.That(header, Does.Contain($"'shape': ({summary.Windows}, 25, 2)"));
                 Assert.That(File.ReadAllText(Path.Combine(dir, "dataset.txt")), Does.Contain("classes=" + segments.Names()));
+            }
+            finally
+            {
+                if (Directory.Exists(dir)) Directory.Delete(dir, true);
+            }
+        }
+
+        [Test]
+        public void StillRealRecordingsAreExportedAsStandingAtTheirOwnStrideAndNearTheGateOnly()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "headgait-export-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                // The generated start-stop walk under a still and a walking activity's name: only the still one is kept,
+                // standing throughout although it walks (nobody walks in a still activity, whatever the signal does).
+                var walk = TestData.Eval("start_stop");
+                var still = GaitTraining.RealStillRecordings(new[] { new Recording("p1_e001_standing_pickup", walk.Samples), new Recording("p1_e002_walking", walk.Samples) });
+                Assert.That(still.Select(r => r.Name), Is.EqualTo(new[] { "p1_e001_standing_pickup" }));
+                Assert.That(still[0].Samples.All(r => r.HasTruth && r.Left == GaitPhase.Standing && r.Right == GaitPhase.Standing), Is.True);
+                var segments = new StrideSegments(TestData.Map);
+                var items = new[]
+                {
+                    new WindowDataset.Item { Recording = walk, FileIndex = 0 },
+                    new WindowDataset.Item { Recording = still[0], FileIndex = 1, Stride = 12 },
+                };
+                var summary = WindowDataset.Export(items, new[] { walk.Name, still[0].Name }, WindowFeatures.Parse("samples:50 step:2 channels:smv"), segments, 4, dir);
+                long windows = 0;
+                var pre = new StreamPreprocessor();
+                foreach (var s in walk.Samples) pre.Push(s.Imu, w => windows++);
+                long own = (windows + 3) / 4, fromStill = (windows + 11) / 12;
+                Assert.That(summary.Windows, Is.EqualTo(own + fromStill));
+                var y = File.ReadAllBytes(Path.Combine(dir, "y.npy"));
+                for (long i = own; i < own + fromStill; i++)
+                    Assert.That(BitConverter.ToInt32(y, (int)(128 + 4 * i)), Is.EqualTo(segments.StandingClass), $"window {i}");
+                Assert.That(File.ReadAllText(Path.Combine(dir, "files.tsv")), Does.Contain("1\tp1_e001_standing_pickup"));
+
+                // Near a gate only: one that scores every window -0.5 keeps them all within 1 log-odds, one at -2 none.
+                long Near(double bias)
+                {
+                    var w = new double[WalkingGate.WeightCount];
+                    w[WalkingGate.InputCount] = bias;
+                    var item = new WindowDataset.Item { Recording = still[0], Stride = 12, NearGate = new WalkingGate(w), NearLogOdds = 1 };
+                    return WindowDataset.Export(new[] { item }, new[] { still[0].Name }, WindowFeatures.Parse("samples:50 step:2 channels:smv"), segments, 4, Path.Combine(dir, "near")).Windows;
+                }
+                Assert.That(Near(-0.5), Is.EqualTo(fromStill));
+                Assert.That(Near(-2), Is.Zero);
             }
             finally
             {

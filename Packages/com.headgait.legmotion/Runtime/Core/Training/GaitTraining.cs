@@ -203,6 +203,24 @@ namespace HeadGait.Training
             return list;
         }
 
+        /// <summary>
+        /// The still real recordings (standing, sitting with head movement, picking things up; <see cref="RealActivity.IsStill"/>)
+        /// labelled standing throughout, for the learned classifiers' standing class: nobody walks in them, whatever the
+        /// head does. Walking and other activities are left out (their phases are unknown).
+        /// </summary>
+        public static List<Recording> RealStillRecordings(IEnumerable<Recording> real)
+        {
+            var list = new List<Recording>();
+            foreach (var rec in real)
+            {
+                if (!RealActivity.IsStill(RealActivity.Of(rec))) continue;
+                var samples = new List<RecordedSample>(rec.Samples.Count);
+                foreach (var s in rec.Samples) samples.Add(new RecordedSample(s.Imu, GaitPhase.Standing, GaitPhase.Standing, s.Line));
+                list.Add(new Recording(rec.Name, samples));
+            }
+            return list;
+        }
+
         /// <summary>The recordings followed by <see cref="CalmGateCopies"/> calm copies of each labelled original (not of augmented copies).</summary>
         public static List<Recording> WithCalmCopies(IReadOnlyList<Recording> training)
             => WithAugmentation(training, CalmGateCopies, CalmSeed, CalmSway);

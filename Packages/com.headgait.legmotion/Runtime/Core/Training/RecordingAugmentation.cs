@@ -53,6 +53,15 @@ namespace HeadGait.Training
 
         /// <summary>Yaw of the sensor from the walking direction (degrees, either way): a temple-mounted sensor is not aligned with the head's forward.</summary>
         public double MaxYawDegrees = 20;
+
+        /// <summary>
+        /// Wider ranges reaching the slowest, calmest walkers (a slowed bn1 *feminine* walks about 60 steps/min with a vertical
+        /// dynamic SD of 0.73 m/s^2): cadence from 55, stretch to 2.2, vertical from 0.6, lateral from 0.35, forward from 0.4.
+        /// </summary>
+        public static WearerSettings Wide() => new WearerSettings
+        {
+            MinCadence = 55, MaxStretch = 2.2, MinVertical = 0.6, MinLateral = 0.35, MinForward = 0.4,
+        };
     }
 
     /// <summary>

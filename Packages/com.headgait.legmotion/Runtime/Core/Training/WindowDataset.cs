@@ -22,6 +22,18 @@ namespace HeadGait.Training
             /// <summary>Index of the original recording (augmented copies share it, so folds keep them together).</summary>
             public int FileIndex;
 
+            /// <summary>Every n-th window of this recording is exported; 0: the export's own stride.</summary>
+            public int Stride;
+
+            /// <summary>
+            /// When set, only windows this gate passes or refuses by less than <see cref="NearLogOdds"/> are exported: the
+            /// learned classifiers decide only where their gate lets a window near, so standing far below it teaches them nothing.
+            /// </summary>
+            public WalkingGate NearGate;
+
+            /// <summary>How far below <see cref="NearGate"/>'s boundary (log-odds) a window is still exported.</summary>
+            public double NearLogOdds;
+
             /// <summary>An augmented copy: trained on, never scored.</summary>
             public bool Augmented;
 
@@ -60,15 +72,18 @@ namespace HeadGait.Training
                 {
                     var rec = item.Recording;
                     if (!rec.HasTruth) continue;
-                    var pre = new StreamPreprocessor(new PreprocessorSettings { WindowLength = features.Samples });
+                    var gate = item.NearGate;
+                    var pre = new StreamPreprocessor(new PreprocessorSettings { WindowLength = features.Samples, History = Math.Max(features.Samples, gate?.History ?? 0) });
                     var labels = new LabelCursor(rec);
                     long produced = 0;
+                    int every = item.Stride > 0 ? item.Stride : stride;
                     foreach (var s in rec.Samples)
                     {
                         pre.Push(s.Imu, w =>
                         {
-                            if (produced++ % stride != 0) return;
+                            if (produced++ % every != 0) return;
                             if (!labels.TryLabelsAt(w.EndTime + labelLead, out var truth)) return;
+                            if (gate != null && !gate.Passes(w, out double logOdds) && logOdds <= -item.NearLogOdds) return;
                             int cls = segments.ClassOf(truth.Left, truth.Right);
                             features.Extract(w, buffer);
                             foreach (var v in buffer) x.Write((float)v);
