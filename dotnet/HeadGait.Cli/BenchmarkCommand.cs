@@ -92,7 +92,7 @@ namespace HeadGait.Cli
                     var train = recordings.Where(r => !fold.IsTest(r.Name)).ToList();
                     if (train.Count == 0 || test.Count == 0) continue;
                     var (foldModels, gates, map) = cache == null
-                        ? TrainFold(train, augment, names.Contains("thr"), names.Contains("cor"), realGateWindows)
+                        ? TrainFold(train, augment, FoldTrainsThreshold(names), names.Contains("cor"), realGateWindows)
                         : CachedFold(Path.Combine(cache, scheme, TrainCommand.Safe(fold.Name)), $"augment {augment}; glasses gate windows {(realGateWindows == null ? "none" : "yes")}", () => TrainFold(train, augment, true, true, realGateWindows));
                     string learnedDir = Path.Combine(cvFolder, scheme, TrainCommand.Safe(fold.Name));
                     var learned = Directory.Exists(learnedDir) ? GaitModels.Load(learnedDir) : null;
@@ -179,6 +179,14 @@ namespace HeadGait.Cli
         /// <summary>THR and COR (as asked) trained on a fold's training recordings as `headgait train` does, with every classifier's walking gate and the phase map.</summary>
         /// <summary>THR and COR trained on a fold's recordings as `headgait train` does, every classifier's walking gate with them
         /// (also on <paramref name="realGateWindows"/>, unlabelled real recordings' windows, where given).</summary>
+        /// <summary>
+        /// Whether a fold needs its own THR for <paramref name="names"/>: THR itself, and the SVM and BLSTM, whose step clock runs
+        /// on the fold's THR as the shipped ones run on the shipped THR (<see cref="GaitModels.SvmOf"/>). Without it a run of the
+        /// learned classifiers alone gave them THR's defaults (style CV, SVM: standing with gestures shown as walking 0.9 % alone,
+        /// 1.0 % beside THR).
+        /// </summary>
+        internal static bool FoldTrainsThreshold(IEnumerable<string> names) => names.Any(n => n == "thr" || n.StartsWith("svm") || n.StartsWith("blstm"));
+
         internal static (GaitModels Models, (WalkingGate Threshold, WalkingGate Correlation, WalkingGate Learned) Gates, PhaseMap Map) TrainFold(
             List<Recording> train, int augment, bool thr, bool cor, GaitTraining.GateWindows realGateWindows = null)
         {
