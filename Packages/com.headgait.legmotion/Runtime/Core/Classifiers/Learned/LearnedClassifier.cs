@@ -411,13 +411,13 @@ namespace HeadGait
 
             public WindowReading(double time, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmPeriod, bool stepClockWalks, bool stepClockShowsWalk)
             {
-                StepClockShowsWalk = stepClockShowsWalk;
                 Time = time;
                 SampleRate = sampleRate;
                 Gate = gate;
                 Tilt = tilt;
                 RhythmPeriod = rhythmPeriod;
                 StepClockWalks = stepClockWalks;
+                StepClockShowsWalk = stepClockShowsWalk;
             }
         }
 
@@ -579,10 +579,10 @@ namespace HeadGait
             refusedRun = refused ? refusedRun + 1 : 0;
             // While the head's rhythm holds a walk in progress (or a settled walk's refusal is a near miss), the model decides
             // as if the gate had passed the window; the refusals still count, so one no longer held ends the walk at once.
-            bool heldByRhythm = filter != null && WasWalking
-                && (gate == GateVerdict.RefusesInStepRhythm && filter.Settings.HoldOnRhythm || gate == GateVerdict.RefusesNarrowly && !IsYoung(now));
-            bool ridden = refused && !heldByRhythm && filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
             bool young = IsYoung(now);
+            bool heldByRhythm = filter != null && WasWalking
+                && (gate == GateVerdict.RefusesInStepRhythm && filter.Settings.HoldOnRhythm || gate == GateVerdict.RefusesNarrowly && !young);
+            bool ridden = refused && !heldByRhythm && filter != null && WasWalking && !bending && refusedRun <= filter.Settings.RiddenRefusals;
             ApplyGate(probabilities, refused && !heldByRhythm, ridden, gate, young);
             if (wearer) ApplyGate(wearerProbabilities, refused && !heldByRhythm, ridden, gate, young);
             double dt = double.IsNaN(lastTime) || !(now > lastTime) ? 1 / sampleRate : Math.Min(0.25, now - lastTime);
