@@ -241,19 +241,7 @@ namespace HeadGait.Tests
             List<(double time, bool walking)> Shown(PhaseFilterSettings settings)
             {
                 LearnedClassifier c = kind == "svm" ? new SvmClassifier(models.Svm, settings) : new BlstmClassifier(models.Blstm, settings);
-                var gate = c.Gate;
-                var weights = new double[WalkingGate.LinearWeightCount];
-                weights[weights.Length - 1] = -100;
-                var refusing = WalkingGate.FromWeights(weights, gate.LevelTolerance);
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = c.WindowLength });
-                var shown = new List<(double, bool)>();
-                foreach (var s in rec.Samples)
-                    pre.Push(s.Imu, w =>
-                    {
-                        c.Gate = w.EndTime >= from && w.EndTime < to ? refusing : gate;
-                        shown.Add((w.EndTime, c.Classify(w).IsWalking));
-                    });
-                return shown;
+                return ShownWithGateSwapped(c, rec, ScoringEveryWindow(-100, c.Gate), from, to);
             }
             PhaseFilterSettings Settings(bool hold)
             {
@@ -269,6 +257,24 @@ namespace HeadGait.Tests
             Assert.That(held.FindAll(p => p.time >= from - 0.5 && p.time < to + 0.5).TrueForAll(p => p.walking), Is.True, "one walk through the refusals");
             var unheld = Shown(Settings(false));
             Assert.That(unheld.FindAll(p => p.time >= from && p.time < to).Exists(p => !p.walking), Is.True, "without the hold the refusals end the walk");
+        }
+
+        /// <summary>
+        /// Each window of <paramref name="rec"/> as <paramref name="c"/> shows it (walking or not), its gate swapped for
+        /// <paramref name="swapped"/> for windows ending in [<paramref name="from"/>, <paramref name="to"/>).
+        /// </summary>
+        static List<(double time, bool walking)> ShownWithGateSwapped(LearnedClassifier c, Recording rec, WalkingGate swapped, double from, double to)
+        {
+            var gate = c.Gate;
+            var pre = new StreamPreprocessor(new PreprocessorSettings { History = c.WindowLength });
+            var shown = new List<(double, bool)>();
+            foreach (var s in rec.Samples)
+                pre.Push(s.Imu, w =>
+                {
+                    c.Gate = w.EndTime >= from && w.EndTime < to ? swapped : gate;
+                    shown.Add((w.EndTime, c.Classify(w).IsWalking));
+                });
+            return shown;
         }
 
         /// <summary>A gate that gives every window <paramref name="logOdds"/> (levelled as <paramref name="like"/>, no rhythm of its own).</summary>
@@ -294,17 +300,7 @@ namespace HeadGait.Tests
                 settings.HoldOnRhythm = false;
                 settings.NarrowRefusalLogOdds = narrow;
                 var c = new SvmClassifier(models.Svm, settings);
-                var gate = c.Gate;
-                var refusing = ScoringEveryWindow(refusal, gate);
-                var pre = new StreamPreprocessor(new PreprocessorSettings { History = c.WindowLength });
-                var shown = new List<(double, bool)>();
-                foreach (var s in rec.Samples)
-                    pre.Push(s.Imu, w =>
-                    {
-                        c.Gate = w.EndTime >= gateFrom && w.EndTime < to ? refusing : gate;
-                        shown.Add((w.EndTime, c.Classify(w).IsWalking));
-                    });
-                return shown;
+                return ShownWithGateSwapped(c, rec, ScoringEveryWindow(refusal, c.Gate), gateFrom, to);
             }
             Assert.That(SvmClassifier.DefaultFilter().NarrowRefusalLogOdds, Is.EqualTo(2));
             var held = Shown(2, from, -1);

@@ -268,6 +268,14 @@ namespace HeadGait.Tests
             Assert.That(shipped, Is.LessThan(300), "with it, about a second after the walk and the blips themselves");
         }
 
+        /// <summary>The real glasses recordings (`glasses-train`) of the people whose file names start so, in name order; ignored without them.</summary>
+        static List<string> GlassesFilesOf(params string[] people)
+        {
+            string folder = TestData.SharedData("glasses-train");
+            if (!Directory.Exists(folder)) Assert.Ignore($"{folder} not found");
+            return Directory.GetFiles(folder, "*.csv").Where(f => people.Any(Path.GetFileName(f).StartsWith)).OrderBy(f => f).ToList();
+        }
+
         /// <summary>A recording's windows as the classifier scored and read them (<see cref="LearnedClassifier.Read"/>), to decide again under other settings.</summary>
         sealed class ScoredRecording
         {
@@ -317,13 +325,10 @@ namespace HeadGait.Tests
         [TestCase("blstm")]
         public void OnTheGlassesFewerWalksAreShownAndLessPickingUpAsWalking(string kind)
         {
-            string folder = TestData.SharedData("glasses-train");
-            if (!Directory.Exists(folder)) Assert.Ignore($"{folder} not found");
-            var people = new[] { "cg2_u01_", "cg2_u02_", "cg2_u03_" };
-            var files = Directory.GetFiles(folder, "*.csv").Where(f => people.Any(Path.GetFileName(f).StartsWith)).OrderBy(f => f).ToList();
+            var files = GlassesFilesOf("cg2_u01_", "cg2_u02_", "cg2_u03_");
             var walkingFiles = files.Where(f => f.EndsWith("_walking.csv")).ToList();
             var stillFiles = files.Where(f => f.EndsWith("_standing_pickup.csv")).ToList();
-            if (walkingFiles.Count == 0 || stillFiles.Count == 0) Assert.Ignore($"no cg2 walking and picking-up recordings in {folder}");
+            if (walkingFiles.Count == 0 || stillFiles.Count == 0) Assert.Ignore("no cg2 walking and picking-up recordings in glasses-train");
             var models = Models;
             int walksWith = 0, walksWithout = 0, walkingWith = 0, walkingWithout = 0, stillWith = 0, stillWithout = 0;
             foreach (var f in walkingFiles.Concat(stillFiles))
@@ -349,7 +354,6 @@ namespace HeadGait.Tests
             Assert.That(walkingWith, Is.GreaterThan(0.98 * walkingWithout), "walking shown stays");
             Assert.That(stillWith, Is.LessThan(0.8 * stillWithout), "less of picking things up shown as walking");
         }
-    
 
         /// <summary>
         /// The shipped BLSTM (<see cref="GaitModels.BlstmOf"/>, streamed window by window; classifier output) on the real
@@ -360,13 +364,11 @@ namespace HeadGait.Tests
         [Test]
         public void TheBlstmShowsLessOfTheGlassesStandingAsWalking()
         {
-            string folder = TestData.SharedData("glasses-train");
-            if (!Directory.Exists(folder)) Assert.Ignore($"{folder} not found");
             var people = new[] { "cg1a_u08_", "cg1a_u09_", "cg1a_u10_" };
-            var files = Directory.GetFiles(folder, "*.csv").Where(f => people.Any(Path.GetFileName(f).StartsWith)).OrderBy(f => f).ToList();
+            var files = GlassesFilesOf(people);
             var standing = files.Where(f => f.EndsWith("_standing.csv")).ToList();
             var walking = files.Where(f => f.EndsWith("_walking.csv")).ToList();
-            if (standing.Count == 0 || walking.Count == 0) Assert.Ignore($"no cg1a standing and walking recordings of {string.Join(", ", people)} in {folder}");
+            if (standing.Count == 0 || walking.Count == 0) Assert.Ignore($"no cg1a standing and walking recordings of {string.Join(", ", people)} in glasses-train");
             var models = Models;
             int Walking(IEnumerable<string> recordings, Action<PhaseFilterSettings> change)
             {
