@@ -88,7 +88,7 @@ namespace HeadGait.Unity
         }
 
 #if !ENABLE_INPUT_SYSTEM && ENABLE_LEGACY_INPUT_MANAGER
-        void Update() => legacy?.Poll(Time.unscaledTimeAsDouble);
+        void Update() => legacy?.Poll(HeadClock.Now);
 #endif
 
         void LateUpdate()

@@ -50,7 +50,7 @@ namespace HeadGait.Unity
         /// <summary>What the wearer is told now.</summary>
         public string PromptText => walk != null ? walk.Prompt(Now) : note ?? new CalibrationWalk().Prompt(Now);
 
-        static double Now => Time.realtimeSinceStartupAsDouble;
+        static double Now => HeadClock.Now;
 
         void Awake()
         {
@@ -110,7 +110,8 @@ namespace HeadGait.Unity
         void OnSample(ImuSample sample) => walk?.AddHead(sample);
 
         /// <summary>
-        /// Both ankle devices' positions (tracking space, m) at <paramref name="time"/> on the head samples' clock, for
+        /// Both ankle devices' positions (tracking space, m) at <paramref name="time"/> on the head samples' clock
+        /// (<see cref="HeadClock.Now"/> for a pose read now), for
         /// devices read elsewhere (Input System actions, a recorded session); assigned ankle transforms are read every frame.
         /// </summary>
         public void AddAnklePoses(double time, Vector3 left, Vector3 right) => walk?.AddAnkles(time, left.x, left.y, left.z, right.x, right.y, right.z);
