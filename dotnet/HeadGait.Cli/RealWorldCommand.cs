@@ -24,7 +24,7 @@ namespace HeadGait.Cli
             var perPerson = new Option<string>("--per-person") { Description = "also write every recording's scores (person, activity, classifier) to this CSV" };
             var cv = new Option<string>("--cv") { Description = "person: leave one person out: each person's recordings are judged by walking gates trained on the --train recordings and the other people's recordings in --data (as `train --real` trains them); the rest of each model as shipped" };
             var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
-            var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (defaults 0.15 s, 0, 0: any time); off as shipped" };
+            var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (defaults 0.15 s, 0, 0: any time); replaces the shipped setting (THR 0.75,0.15,1,3; COR off)" };
             var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, the start of bouts met standing and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
                 data, classifier, models, perPerson, cv, train, firstStep,

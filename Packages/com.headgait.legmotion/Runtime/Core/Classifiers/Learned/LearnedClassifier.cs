@@ -473,6 +473,9 @@ namespace HeadGait
             {
                 var s = (WalkClockSettings ?? new ThresholdSettings()).Clone();
                 s.Gate = Gate;
+                // THR's provisional start on a first step is THR's own way to show a walk sooner; the clock that keeps a
+                // model's walks going vouches only for walks the gate passed (with it, the SVM's glasses fragments 9 to 12).
+                s.Clock.FirstStep = new FirstStepStartSettings();
                 stepClock = new ThresholdClassifier(s);
                 stepClockTime = double.NaN;
             }
