@@ -518,9 +518,7 @@ namespace HeadGait.Tests
             // the sure stretches of walking, matched five wearers' standing, head movement and picking up (COR's classifier
             // output on them 1.4 to 1.8 % of picking up), until a candidate had to show no more walking outside the walk's
             // own rhythm than the shipped COR (AdaptationSettings.StillCheck).
-            string folder = TestData.SharedData("glasses-train");
-            if (!Directory.Exists(folder)) Assert.Ignore($"{folder} not found");
-            var recordings = Directory.GetFiles(folder, "*.csv").OrderBy(f => f, StringComparer.Ordinal).Select(f => RecordingCsv.Load(f)).ToList();
+            var recordings = TestData.GlassesFiles().Select(f => RecordingCsv.Load(f)).ToList();
             double shippedFrames = 0, adaptedFrames = 0, stillFrames = 0;
             int ownSteps = 0;
             foreach (var person in recordings.GroupBy(RealActivity.PersonOf))

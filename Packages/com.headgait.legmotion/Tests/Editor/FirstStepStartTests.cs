@@ -1,4 +1,3 @@
-using System.IO;
 using System.Collections.Generic;
 using System.Linq;
 using HeadGait.Synthetic;
@@ -103,7 +102,7 @@ namespace HeadGait.Tests
         [Test]
         public void ShippedThrStartsTheGlassesWalkersBoutsSooner()
         {
-            var files = GlassesFiles("*_walking.csv");
+            var files = TestData.GlassesFiles("*_walking.csv");
             var shipped = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)).Threshold;
             Assert.That(shipped.Clock.FirstStep.Enabled, Is.True, "THR ships the first-step start");
             var off = shipped.Clone();
@@ -133,7 +132,7 @@ namespace HeadGait.Tests
         [Test]
         public void TheLearnedClassifiersStepClockTakesNoFirstStepStart()
         {
-            var files = GlassesFiles("cg2_u0*_walking.csv").Take(3).ToList();
+            var files = TestData.GlassesFiles("cg2_u0*_walking.csv").Take(3).ToList();
             var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
             Assert.That(models.Threshold.Clock.FirstStep.Enabled, Is.True);
             var off = models.Threshold.Clone();
@@ -156,16 +155,6 @@ namespace HeadGait.Tests
             }
             Assert.That(windows, Is.GreaterThan(10000));
             Assert.That(differing, Is.Zero, $"{differing} of {windows} windows differ");
-        }
-
-        /// <summary>The glasses recordings (`glasses-train`) whose names match <paramref name="pattern"/>, in name order; ignored without them.</summary>
-        static List<string> GlassesFiles(string pattern)
-        {
-            string folder = TestData.SharedData("glasses-train");
-            if (!Directory.Exists(folder)) Assert.Ignore($"{folder} not found");
-            var files = Directory.GetFiles(folder, pattern).OrderBy(f => f).ToList();
-            if (files.Count == 0) Assert.Ignore($"no {pattern} recordings in glasses-train");
-            return files;
         }
 
         static IEnumerable<double> StartDelays(Recording rec, RhythmReference reference, IGaitClassifier c)

@@ -268,13 +268,9 @@ namespace HeadGait.Tests
             Assert.That(shipped, Is.LessThan(300), "with it, about a second after the walk and the blips themselves");
         }
 
-        /// <summary>The real glasses recordings (`glasses-train`) of the people whose file names start so, in name order; ignored without them.</summary>
+        /// <summary>The real glasses recordings of the people whose file names start so, in name order.</summary>
         static List<string> GlassesFilesOf(params string[] people)
-        {
-            string folder = TestData.SharedData("glasses-train");
-            if (!Directory.Exists(folder)) Assert.Ignore($"{folder} not found");
-            return Directory.GetFiles(folder, "*.csv").Where(f => people.Any(Path.GetFileName(f).StartsWith)).OrderBy(f => f).ToList();
-        }
+            => TestData.GlassesFiles().Where(f => people.Any(Path.GetFileName(f).StartsWith)).ToList();
 
         /// <summary>A recording's windows as the classifier scored and read them (<see cref="LearnedClassifier.Read"/>), to decide again under other settings.</summary>
         sealed class ScoredRecording

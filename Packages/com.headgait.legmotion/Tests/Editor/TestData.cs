@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using NUnit.Framework;
 
 namespace HeadGait.Tests
@@ -133,6 +134,18 @@ namespace HeadGait.Tests
                 if (Directory.Exists(c)) return c;
             Assert.Ignore($"real-motion data not found (looked for {string.Join(" and ", candidates)})");
             return null;
+        }
+
+        /// <summary>
+        /// The real glasses recordings (`glasses-train` in <see cref="SharedData"/>) whose file names match
+        /// <paramref name="pattern"/>, in ordinal name order; the test is skipped when there are none.
+        /// </summary>
+        public static List<string> GlassesFiles(string pattern = "*.csv")
+        {
+            string folder = SharedData("glasses-train");
+            var files = Directory.GetFiles(folder, pattern).OrderBy(f => f, StringComparer.Ordinal).ToList();
+            if (files.Count == 0) Assert.Ignore($"no {pattern} recordings in {folder}");
+            return files;
         }
     }
 }
