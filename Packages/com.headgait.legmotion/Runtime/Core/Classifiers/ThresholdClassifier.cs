@@ -97,13 +97,14 @@ namespace HeadGait
         /// 27.0 / 27.4 / 28.0 %, but its step recall fell (the avatar's 96.1 / 95.8 / 94.8 / 94.7 / 94.5 %; file CV, the
         /// classifier's, 96.7 to 94.4 % at 5 ms for 23.2 to 23.0 %): the first contact of each clip, where it starts its
         /// walk, already shows the foot landed in its first walking frame. A walk from a still head after standing is shown
-        /// from its second contact (<see cref="StepClockSettings.StillStartContacts"/>). A start takes a gate score that
+        /// from its second contact (<see cref="StepClockSettings.StillStartContacts"/>), and so is one within 2 s of the head's
+        /// tilt moving, as in coming up from picking something up (<see cref="StepClockSettings.TiltMoveStartContacts"/>). A start takes a gate score that
         /// passed within 0.3 s (<see cref="StepClockSettings.StartGateScoreWithin"/>; 0.6 s scored the same). Within 3 s of a
         /// walk shown, a contact the gate refuses by less than 0.75 log-odds starts a provisional walk, withdrawn unless the
         /// gate passes or a second contact comes within 0.15 s, or at once where the gate's log-odds fall to -1
         /// (<see cref="FirstStepStartSettings"/>): a walker resuming after a turn or a pause is shown walking a step sooner.
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35, StillStartContacts = 2, StartGateScoreWithin = 0.3,
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35, StillStartContacts = 2, TiltMoveStartContacts = 2, StartGateScoreWithin = 0.3,
             FirstStep = new FirstStepStartSettings { Margin = 0.75, ConfirmWithin = 0.15, KeepMargin = 1, ResumeWithin = 3 } };
 
         public ThresholdSettings Clone()
