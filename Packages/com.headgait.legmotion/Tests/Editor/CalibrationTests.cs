@@ -239,6 +239,54 @@ namespace HeadGait.Tests
             }
         }
 
+        /// <summary>
+        /// Wearer ids that differ only in case are one wearer (<see cref="WearerProfiles"/>). On a standalone headset the
+        /// profiles lie in Android's shared storage, whose file names fold case: "anna" saved over "Anna"'s file there, and
+        /// "Anna" then found a profile naming another wearer and got the shipped models. Where names keep case (here) the two
+        /// were two files. Now both spellings find the one file, named as first saved, holding the last profile saved.
+        /// </summary>
+        [Test]
+        public void WearerIdsThatDifferOnlyInCaseAreOneWearer()
+        {
+            var walk = Walk(Wearer());
+            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
+            var first = new CalibrationSession(Unlabelled(walk), left, right).Fit(Shipped, "Anna");
+            string text = first.Serialize();
+            Assert.That(text, Does.Contain("wearer=Anna\n"));
+            var again = WearerProfile.Parse(text.Replace("wearer=Anna\n", "wearer=anna\n"));
+            string folder = Path.Combine(Path.GetTempPath(), "headgait-profile-case-test-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var store = new WearerProfiles(folder);
+                store.Save(first);
+                store.Save(again);
+                Assert.That(Directory.GetFiles(folder), Has.Length.EqualTo(1), "one wearer, one file");
+                Assert.That(store.Wearers(), Is.EqualTo(new[] { "Anna" }), "named as first saved");
+                foreach (var id in new[] { "Anna", "anna", "ANNA" })
+                {
+                    Assert.That(store.ModelsFor(id, Shipped, out var profile, out string note), Is.Not.SameAs(Shipped), id);
+                    Assert.That(note, Is.Null, id);
+                    Assert.That(profile.Wearer, Is.EqualTo("anna"), "the profile saved last");
+                }
+                Assert.That(store.Reset("ANNA"), Is.True);
+                Assert.That(Directory.GetFiles(folder), Is.Empty);
+
+                // Two files differing only in case, from before (or copied in): neither is guessed at, and the save is refused.
+                File.WriteAllText(Path.Combine(folder, "Anna" + WearerProfile.Extension), text);
+                File.WriteAllText(Path.Combine(folder, "anna" + WearerProfile.Extension), again.Serialize());
+                if (Directory.GetFiles(folder).Length < 2) Assert.Pass("this file system folds case itself");
+                Assert.That(store.ModelsFor("ANNA", Shipped, out var none, out string both), Is.SameAs(Shipped));
+                Assert.That(none, Is.Null);
+                Assert.That(both, Does.Contain("Anna" + WearerProfile.Extension).And.Contain("anna" + WearerProfile.Extension).And.Contain("differ only in case"));
+                Assert.Throws<IOException>(() => store.Save(first));
+                Assert.That(File.ReadAllText(Path.Combine(folder, "Anna" + WearerProfile.Extension)), Is.EqualTo(text), "nothing saved is changed");
+            }
+            finally
+            {
+                if (Directory.Exists(folder)) Directory.Delete(folder, true);
+            }
+        }
+
         [Test]
         public void TheLearnedModelsRefitToTheWearerAndKeepItThroughSaveAndLoad()
         {

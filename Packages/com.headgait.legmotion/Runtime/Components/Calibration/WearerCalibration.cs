@@ -101,7 +101,16 @@ namespace HeadGait.Unity
         /// <summary>Deletes the wearer's profile and goes back to the shipped models.</summary>
         public void ResetWearer()
         {
-            Profiles.Reset(wearer);
+            try
+            {
+                Profiles.Reset(wearer);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException)
+            {
+                note = $"Calibration for '{wearer}' not reset: {e.Message}";
+                Debug.LogWarning($"HeadGait: {note}", this);
+                return;
+            }
             walk = null;
             legs?.ApplyProfile(null);
             note = $"Calibration for '{wearer}' reset: the legs use their usual settings.";

@@ -7,6 +7,9 @@ namespace HeadGait.Calibration
     /// <summary>
     /// The wearers' profiles in one folder (<c>WEARER.profile.txt</c>): chosen at start-up by wearer id, saved whole or not
     /// at all, reset by deleting. A wearer without a usable profile gets the shipped models, and the reason is said.
+    /// Wearer ids are one wearer whatever their case: on a standalone headset the folder lies in Android's shared storage
+    /// (<c>Application.persistentDataPath</c>), whose file names fold case, so "anna" saved over "Anna"'s file there; the
+    /// first saved spelling names the file everywhere.
     /// </summary>
     public sealed class WearerProfiles
     {
@@ -18,11 +21,27 @@ namespace HeadGait.Calibration
 
         public string Folder { get; }
 
+        /// <summary>
+        /// The wearer's profile file: the one here whose name matches the id whatever its case, else the id's own. Throws
+        /// <see cref="ArgumentException"/> for an id that is no file name, and <see cref="IOException"/> naming the files
+        /// when several differ only in case (written where names keep case, before ids were one wearer whatever their case).
+        /// </summary>
         public string PathOf(string wearer)
         {
             if (!WearerProfile.IsValidWearer(wearer)) throw new ArgumentException($"Wearer id '{wearer}' is not 1-64 letters, digits, '-', '_' or '.'.");
-            return Path.Combine(Folder, wearer + WearerProfile.Extension);
+            string exact = Path.Combine(Folder, wearer + WearerProfile.Extension);
+            if (!Directory.Exists(Folder)) return exact;
+            var matches = new List<string>();
+            foreach (var f in Directory.GetFiles(Folder, "*" + WearerProfile.Extension))
+                if (string.Equals(Path.GetFileName(f), wearer + WearerProfile.Extension, StringComparison.OrdinalIgnoreCase)) matches.Add(f);
+            if (matches.Count <= 1) return matches.Count == 1 ? matches[0] : exact;
+            matches.Sort(StringComparer.Ordinal);
+            throw new IOException($"Wearer '{wearer}' has {matches.Count} profiles whose names differ only in case ({string.Join(", ", matches)}); " +
+                                  "wearer ids are one wearer whatever their case: delete the ones not wanted.");
         }
+
+        /// <summary>Whether two wearer ids name the same wearer.</summary>
+        public static bool SameWearer(string a, string b) => string.Equals(a, b, StringComparison.OrdinalIgnoreCase);
 
         /// <summary>Wearers with a profile file here, sorted.</summary>
         public List<string> Wearers()
@@ -68,7 +87,7 @@ namespace HeadGait.Calibration
             {
                 path = PathOf(wearer);
             }
-            catch (ArgumentException e)
+            catch (Exception e) when (e is ArgumentException || e is IOException || e is UnauthorizedAccessException)
             {
                 note = e.Message + " Using the shipped models.";
                 return shipped;
@@ -81,7 +100,7 @@ namespace HeadGait.Calibration
             try
             {
                 var p = WearerProfile.Load(path);
-                if (p.Wearer != wearer) throw new FormatException($"{path}: holds wearer '{p.Wearer}', not '{wearer}'");
+                if (!SameWearer(p.Wearer, wearer)) throw new FormatException($"{path}: holds wearer '{p.Wearer}', not '{wearer}'");
                 string current = WearerProfile.Fingerprint(shipped);
                 if (p.BaseModels.Length > 0 && current.Length > 0 && p.BaseModels != current)
                 {
