@@ -55,6 +55,25 @@ namespace HeadGait.Tests
             Assert.That(second.Session.AnswersOf(0).Count, Is.EqualTo(2));
         }
 
+        /// <summary>
+        /// The journal's files hold no write buffer: a line is with the operating system at its write. With a buffer, a line
+        /// a full disk refused stayed in it (the journal's cut-back flushed first and failed again), and closing the journal
+        /// once space was freed wrote the whole checksummed line the operator had been told was NOT saved.
+        /// </summary>
+        [Test]
+        public void AJournalLineIsWithTheOperatingSystemAtItsWriteNotLeftInABuffer()
+        {
+            Directory.CreateDirectory(folder);
+            string path = Path.Combine(folder, "buffer-check.txt");
+            var line = Encoding.UTF8.GetBytes("1\t2026-12-07T00:00:00.000Z\tanswer\t0\tage\t31\n");
+            using (var writer = JournalFileAccess.Default.Open(path, FileMode.Create, FileAccess.ReadWrite, FileShare.Read))
+            {
+                writer.Write(line, 0, line.Length);
+                using (var reader = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.ReadWrite))
+                    Assert.That(reader.Length, Is.EqualTo(line.Length), "the line reached the file at its write, before any flush");
+            }
+        }
+
         [Test]
         public void AZeroByteOrHalfWrittenJournalFromACrashAtCreationDoesNotBlockTheId()
         {

@@ -10,8 +10,12 @@ namespace HeadGait.Study
     {
         public static JournalFileAccess Default { get; } = new JournalFileAccess();
 
+        /// <summary>
+        /// Opens without a write buffer (each line is one write): a line the disk refuses must fail at its write and leave
+        /// nothing behind that a later flush or the close could still write after the journal said it was not saved.
+        /// </summary>
         public virtual Stream Open(string path, FileMode mode, FileAccess access, FileShare share)
-            => new FileStream(path, mode, access, share, 4096, FileOptions.None);
+            => new FileStream(path, mode, access, share, 1, FileOptions.None);
 
         /// <summary>Pushes what was written through the operating system's caches onto the disk.</summary>
         public virtual void FlushToDisk(Stream stream)
