@@ -87,6 +87,27 @@ namespace HeadGait.Tests
             second.Dispose();
         }
 
+        /// <summary>
+        /// Unity's runtimes on Android and other Unix players check file sharing only within their own process, so there a
+        /// second process's open of the lock file succeeds; the record lock on its first byte is what refuses it. The child
+        /// opens the lock file sharing it, as such a runtime would, and asks for that lock: refused while this process holds
+        /// the participant, granted once it closed it.
+        /// </summary>
+        [Test]
+        public void AnotherProcessThatGetsPastTheSharingRuleIsRefusedTheRecordLock()
+        {
+            if (OperatingSystem.IsMacOS()) Assert.Ignore(".NET on macOS has no record locks");
+            var op = new StudyOperator(folder, new StudyConfig());
+            Assert.That(op.Open(Id), Is.True, op.Error);
+            var child = Child("record");
+            Assert.That(child.StandardOutput.ReadLine(), Does.StartWith("refused"), "the record lock is held");
+            child.WaitForExit(20000);
+            op.Dispose();
+            var after = Child("record");
+            Assert.That(after.StandardOutput.ReadLine(), Is.EqualTo("locked"), "released with the journal");
+            after.WaitForExit(20000);
+        }
+
         [Test]
         public void TwoProcessesRacingForOneIdNeverBothGetIt()
         {

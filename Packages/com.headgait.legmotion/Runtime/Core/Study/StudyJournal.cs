@@ -42,7 +42,8 @@ namespace HeadGait.Study
     /// A participant's data as an append-only journal (<c>ID.journal.tsv</c>), kept as trusted logs are:
     /// <list type="bullet">
     /// <item>One writer per participant: a journal open for writing holds an exclusive lock on <c>ID.journal.lock</c>
-    /// (an operating-system lock, so it ends with the process that held it: a crash never blocks the id); a second open,
+    /// (the open's sharing rule and a record lock on its first byte, operating-system locks, so they end with the process
+    /// that held them: a crash never blocks the id); a second open,
     /// from this process or another, is refused naming the holder and since when (<c>ID.journal.owner</c>).</item>
     /// <item>Every line carries its length and CRC-32 (format v2), so a torn or damaged line is recognised, never misread.</item>
     /// <item>An answer is acknowledged (the call returns) only once its whole line is flushed to the disk; a failed write
@@ -188,13 +189,38 @@ namespace HeadGait.Study
             return e.GetType() == typeof(IOException) && (h == unchecked((int)0x80070020) || h == unchecked((int)0x80070021) || h == 11 || h == 35);
         }
 
+        /// <summary>
+        /// A record lock on the lock file's first byte beside the open's own sharing rule: .NET refuses a second open across
+        /// processes (flock), but Unity's runtimes on Android and other Unix players check sharing only within their own
+        /// process (IL2CPP's and Mono's file layer), where the record lock (fcntl) also refuses another process. .NET on macOS
+        /// has no record locks: the open's rule alone holds there. A failed lock disposes the stream.
+        /// </summary>
+        static void LockRecord(Stream stream)
+        {
+            if (!(stream is FileStream file)) return;
+            try
+            {
+                file.Lock(0, 1);
+            }
+            catch (PlatformNotSupportedException)
+            {
+            }
+            catch
+            {
+                stream.Dispose();
+                throw;
+            }
+        }
+
         void Lock(string folder)
         {
             string lockPath = System.IO.Path.Combine(folder, Participant + LockExtension);
             ownerPath = System.IO.Path.Combine(folder, Participant + OwnerExtension);
             try
             {
-                lockStream = files.Open(lockPath, FileMode.OpenOrCreate, FileAccess.ReadWrite, FileShare.None);
+                var held = files.Open(lockPath, FileMode.OpenOrCreate, FileAccess.ReadWrite, FileShare.None);
+                LockRecord(held);
+                lockStream = held;
             }
             catch (IOException e) when (IsSharingViolation(e))
             {
