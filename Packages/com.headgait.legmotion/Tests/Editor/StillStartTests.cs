@@ -48,15 +48,18 @@ namespace HeadGait.Tests
 
         static GaitModels Models => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
 
+        /// <summary>THR's default settings with a walking gate that passes everything, its clock changed by <paramref name="change"/>.</summary>
+        static IGaitClassifier OpenGateThr(Action<StepClockSettings> change)
+        {
+            var s = new ThresholdSettings { Gate = WalkingGate.Open };
+            change(s.Clock);
+            return new ThresholdClassifier(s);
+        }
+
         /// <summary>THR or COR as shipped, but with a walking gate that passes everything (the bumps are the gate's to judge otherwise).</summary>
         static IGaitClassifier StepClocked(string name, double maxBend)
         {
-            if (name == "thr")
-            {
-                var s = new ThresholdSettings { Gate = WalkingGate.Open };
-                s.Clock.StillStartMaxBend = maxBend;
-                return new ThresholdClassifier(s);
-            }
+            if (name == "thr") return OpenGateThr(c => c.StillStartMaxBend = maxBend);
             var settings = new CorrelationSettings();
             settings.Clock.StillStartMaxBend = maxBend;
             return new CorrelationClassifier(Models.Correlation.With(gate: WalkingGate.Open), settings);
@@ -239,12 +242,7 @@ namespace HeadGait.Tests
         [Test]
         public void ThrShowsNoWalkForOneBumpFromAStillHead()
         {
-            IGaitClassifier Thr(int contacts)
-            {
-                var settings = new ThresholdSettings { Gate = WalkingGate.Open };
-                if (contacts >= 0) settings.Clock.StillStartContacts = contacts;
-                return new ThresholdClassifier(settings);
-            }
+            IGaitClassifier Thr(int contacts) => OpenGateThr(c => { if (contacts >= 0) c.StillStartContacts = contacts; });
             var one = BendThenBumps(0, 1);
             Assert.That(Walks(Thr(0), one).Walking, Is.GreaterThan(30), "without the rule one bump walks");
             Assert.That(Walks(Thr(-1), one).Walking, Is.EqualTo(0), "as shipped it does not");
@@ -262,12 +260,7 @@ namespace HeadGait.Tests
         [Test]
         public void ThrShowsNoWalkForOneBumpAsTheHeadComesBackUp()
         {
-            IGaitClassifier Thr(int contacts)
-            {
-                var settings = new ThresholdSettings { Gate = WalkingGate.Open };
-                if (contacts >= 0) settings.Clock.TiltMoveStartContacts = contacts;
-                return new ThresholdClassifier(settings);
-            }
+            IGaitClassifier Thr(int contacts) => OpenGateThr(c => { if (contacts >= 0) c.TiltMoveStartContacts = contacts; });
             Recording Bumps(double degrees, int bumps) => HeadBendThenBumps("a bend early, then bumps", degrees, down: 0.5, moveDown: 0.8, hold: 1, moveUp: 1, bumpsAt: 5, bumps, seconds: 10);
             Assert.That(Walks(Thr(0), Bumps(60, 1)).Walking, Is.GreaterThan(30), "without the rule the bump walks");
             Assert.That(Walks(Thr(-1), Bumps(0, 1)).Walking, Is.GreaterThan(30), "the bump with the head level walks as shipped");
