@@ -183,9 +183,7 @@ namespace HeadGait.Tests
         [Test]
         public void AProfileRoundTripsAndDamageIsRefusedNamingTheFile()
         {
-            var walk = Walk(Wearer());
-            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
-            var profile = new CalibrationSession(Unlabelled(walk), left, right).Fit(Shipped, "calm-wearer");
+            var profile = AnkleSession(Walk(Wearer())).Fit(Shipped, "calm-wearer");
             string text = profile.Serialize();
             Assert.That(WearerProfile.Parse(text).Serialize(), Is.EqualTo(text));
 
@@ -248,9 +246,7 @@ namespace HeadGait.Tests
         [Test]
         public void WearerIdsThatDifferOnlyInCaseAreOneWearer()
         {
-            var walk = Walk(Wearer());
-            var (left, right) = SyntheticAnkles.From(walk, 72, 3);
-            var first = new CalibrationSession(Unlabelled(walk), left, right).Fit(Shipped, "Anna");
+            var first = AnkleSession(Walk(Wearer())).Fit(Shipped, "Anna");
             string text = first.Serialize();
             Assert.That(text, Does.Contain("wearer=Anna\n"));
             var again = WearerProfile.Parse(text.Replace("wearer=Anna\n", "wearer=anna\n"));
