@@ -114,7 +114,7 @@ namespace HeadGait
         /// 25 ms: 25.5 / 24.9 / 24.7 / 24.9 / 25.3 / 26.2 % (the same order at 72, 90 and 120 Hz; step recall 98.3 %
         /// throughout); file CV at 10 ms 22.3 to 21.2 %. The head's rhythm holds only slow walks against the gate
         /// (<see cref="StepClockSettings.HoldMinRhythmPeriod"/>). A walk from a still head after standing is shown from its
-        /// second contact, one soon after the head's tilt moved from its third, one soon after the head bent from a still head
+        /// third contact, one soon after the head's tilt moved from its third, one soon after the head bent from a still head
         /// from its second (<see cref="StepClockSettings.StillStartContacts"/>, <see cref="StepClockSettings.TiltMoveStartContacts"/>,
         /// <see cref="StepClockSettings.BendStartContacts"/>). Its gate-refusal counts stretch with a slower step (from the
         /// typical step, <see cref="StepClockSettings.StillWindowsStepPeriod"/>) only while the head's tilt holds within 10
@@ -125,7 +125,7 @@ namespace HeadGait
         /// <see cref="ReplaceMargin"/>) slow 31.7 %, gestures 1.58 %, glasses standing 0.94 to 0.95 %, picking up 1.70 %
         /// (see the measurements log).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 2, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 3, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85 };
 
         /// <summary>
         /// A full match (r at or above the threshold) that beats the last contact's r by this much, but comes too soon after it
