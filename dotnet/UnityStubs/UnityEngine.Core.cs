@@ -220,6 +220,10 @@ namespace UnityEngine
         // as in Play Mode unless a test of editor code enters the editor's edit mode (StandInEditMode).
         public static bool isPlaying => !StandInEditMode.Active;
 
+        // Application.bindings.cs: platform { get; } (the editor's own platform in the editor, the player's in a player).
+        // The stand-ins run as Unity's editor on Linux unless a test picks another (StandInPlatform).
+        public static RuntimePlatform platform => StandInPlatform.Current;
+
         // Application.bindings.cs: persistentDataPath { get; } (per platform; ScriptReference Application.persistentDataPath).
         // The stand-in: a folder of its own under the temporary folder, made on first use.
         public static string persistentDataPath
@@ -231,6 +235,37 @@ namespace UnityEngine
                 return path;
             }
         }
+    }
+
+    // Runtime/Export/Application/RuntimePlatform (RuntimePlatform.cs): the values the package and its tests name, with Unity's numbers.
+    public enum RuntimePlatform
+    {
+        OSXEditor = 0,
+        OSXPlayer = 1,
+        WindowsPlayer = 2,
+        WindowsEditor = 7,
+        IPhonePlayer = 8,
+        Android = 11,
+        LinuxPlayer = 13,
+        LinuxEditor = 16,
+    }
+
+    /// <summary>
+    /// Not Unity API: the platform the stand-ins report (<see cref="Application.platform"/>): Unity's editor on Linux, or,
+    /// inside a test's <c>using (new StandInPlatform(...))</c>, another (a player). Package code never uses it.
+    /// </summary>
+    public sealed class StandInPlatform : IDisposable
+    {
+        internal static RuntimePlatform Current = RuntimePlatform.LinuxEditor;
+        readonly RuntimePlatform before;
+
+        public StandInPlatform(RuntimePlatform platform)
+        {
+            before = Current;
+            Current = platform;
+        }
+
+        public void Dispose() => Current = before;
     }
 
     // Runtime/Export/Graphics/GraphicsEnums.cs (decompiled builds also list Unknown = 0); LandscapeLeft is counter-clockwise from portrait.

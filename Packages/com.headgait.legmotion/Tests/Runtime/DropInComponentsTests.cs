@@ -10,6 +10,7 @@ namespace HeadGait.Tests
     /// The drop-in prefab's components on one GameObject, woken as a scene wakes them: they find each other and the
     /// avatar's Animator on their own, and leave nothing running when the object is destroyed.
     /// </summary>
+    [NeedsPackageFiles]
     public class DropInComponentsTests
     {
         readonly TestObjects objects = new TestObjects();

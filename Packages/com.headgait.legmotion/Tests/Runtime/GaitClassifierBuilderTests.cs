@@ -10,6 +10,7 @@ namespace HeadGait.Tests
     /// The classifiers a <see cref="GaitLegAnimator"/> offers, built from the package's trained model files as Unity hands
     /// them over (TextAsset text or bytes); an unusable file is one error naming it and the pipeline falls back.
     /// </summary>
+    [NeedsPackageFiles]
     public class GaitClassifierBuilderTests
     {
         static string Models

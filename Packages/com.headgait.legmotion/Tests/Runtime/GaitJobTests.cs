@@ -14,6 +14,7 @@ namespace HeadGait.Tests
     /// frame the state of the samples handed over up to that frame (not a frame later), and allocate nothing per frame once
     /// warm.
     /// </summary>
+    [NeedsPackageFiles]
     public class GaitJobTests
     {
         static string ModelsFolder

@@ -10,6 +10,7 @@ namespace HeadGait.Tests
     /// the start on every restart; without a reset the pipeline took those samples for late ones or a clock jump and the
     /// avatar froze.
     /// </summary>
+    [NeedsPackageFiles]
     public class RecordingPlaybackTests
     {
         static Recording Walk()

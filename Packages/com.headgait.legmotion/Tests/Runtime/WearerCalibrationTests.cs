@@ -16,6 +16,7 @@ namespace HeadGait.Tests
     /// and its two ankle trackers) replayed into <see cref="WearerCalibration"/>, the profile it writes, and the wearer's
     /// other recordings replayed with that profile against the shipped models.
     /// </summary>
+    [NeedsPackageFiles]
     public class WearerCalibrationTests
     {
         const BindingFlags Any = BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic;
