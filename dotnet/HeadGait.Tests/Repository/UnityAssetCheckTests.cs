@@ -18,6 +18,19 @@ namespace HeadGait.Tests
             Assert.That(problems, Is.Empty, "regenerate with `dotnet run --project dotnet/HeadGait.Cli -c Release -- clips`");
         }
 
+        /// <summary>
+        /// The Legs sample's camera is tagged MainCamera, as Unity's new scenes tag theirs: Camera.main finds a camera by that tag
+        /// alone, and FollowHead falls back to Camera.main for the head (it found none in this scene when untagged).
+        /// </summary>
+        [Test]
+        public void TheLegsSampleCameraIsTheMainCamera()
+        {
+            var docs = UnityYamlFile.Parse(File.ReadAllText(Path.Combine(Package, GaitAssetFiles.SampleScene)), GaitAssetFiles.SampleScene);
+            var cameras = docs.Where(d => d.ClassId == 1 && d.Scalar("m_Name") == "Main Camera").ToList();
+            Assert.That(cameras, Has.Count.EqualTo(1));
+            Assert.That(cameras[0].Scalar("m_TagString"), Is.EqualTo("MainCamera"));
+        }
+
         [Test]
         public void TheCommittedAssetsAreWhatTheGeneratorWrites()
         {

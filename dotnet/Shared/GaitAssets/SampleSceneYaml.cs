@@ -26,7 +26,8 @@ namespace HeadGait.Tooling
 
             var h = new UnityHierarchyYaml(Scope);
             double[] V(double x, double y, double z) => new[] { x, y, z };
-            h.Add("Main Camera", "Main Camera", V(3.2, 1.0, 0), V(5, -90, 0));
+            // Tagged MainCamera as Unity's new scenes tag theirs: Camera.main (FollowHead's fallback head) finds it by the tag.
+            h.Add("Main Camera", "Main Camera", V(3.2, 1.0, 0), V(5, -90, 0), tag: "MainCamera");
             h.AddComponent("Main Camera", 20, "Camera", "Camera",
                 "  serializedVersion: 2\n  m_ClearFlags: 1\n  m_BackGroundColor: {r: 0.19, g: 0.3, b: 0.47, a: 0}\n  m_projectionMatrixMode: 1\n" +
                 "  m_SensorSize: {x: 36, y: 24}\n  m_LensShift: {x: 0, y: 0}\n  m_FocalLength: 50\n  m_NormalizedViewPortRect:\n" +

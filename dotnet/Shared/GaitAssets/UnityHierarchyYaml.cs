@@ -19,6 +19,7 @@ namespace HeadGait.Tooling
             public string Path;
             public string Name;
             public string Parent;
+            public string Tag;
             public double[] Position, Euler, Scale;
             public readonly List<long> Components = new List<long>();
             public readonly List<string> Children = new List<string>();
@@ -39,14 +40,17 @@ namespace HeadGait.Tooling
 
         public long Id(string path, string kind) => Id(scope, path, kind);
 
-        /// <summary>Adds a GameObject with a Transform; the path is '/'-joined names below the root ("" for the root).</summary>
-        public void Add(string path, string name, double[] position = null, double[] euler = null, double[] scale = null)
+        /// <summary>
+        /// Adds a GameObject with a Transform; the path is '/'-joined names below the root ("" for the root); <paramref name="tag"/>
+        /// one of the project's tags (Unity's built-in ones: Untagged, MainCamera, ...).
+        /// </summary>
+        public void Add(string path, string name, double[] position = null, double[] euler = null, double[] scale = null, string tag = "Untagged")
         {
             // A top-level name hangs under the root ("") where there is one (a prefab), else it is a scene root.
             string parent = path.Length == 0 ? null : path.Contains("/") ? path.Substring(0, path.LastIndexOf('/')) : byPath.ContainsKey("") ? "" : null;
             var node = new Node
             {
-                Path = path, Name = name, Parent = parent,
+                Path = path, Name = name, Parent = parent, Tag = tag,
                 Position = position ?? new double[3], Euler = euler ?? new double[3], Scale = scale ?? new[] { 1.0, 1, 1 },
             };
             node.Components.Add(Id(path, "Transform"));
@@ -96,7 +100,7 @@ namespace HeadGait.Tooling
                 sb.Append("  m_ObjectHideFlags: 0\n  m_CorrespondingSourceObject: {fileID: 0}\n  m_PrefabInstance: {fileID: 0}\n  m_PrefabAsset: {fileID: 0}\n");
                 sb.Append("  serializedVersion: 6\n  m_Component:\n");
                 foreach (var c in n.Components) sb.Append("  - component: ").Append(UnityYaml.Ref(c)).Append('\n');
-                sb.Append("  m_Layer: 0\n  m_Name: ").Append(n.Name).Append("\n  m_TagString: Untagged\n  m_Icon: {fileID: 0}\n");
+                sb.Append("  m_Layer: 0\n  m_Name: ").Append(n.Name).Append("\n  m_TagString: ").Append(n.Tag).Append("\n  m_Icon: {fileID: 0}\n");
                 sb.Append("  m_NavMeshLayer: 0\n  m_StaticEditorFlags: 0\n  m_IsActive: 1\n");
 
                 sb.Append(UnityYaml.Document(4, Id(n.Path, "Transform"), "Transform"));
