@@ -16,7 +16,7 @@ namespace HeadGait.Tests
     {
         static readonly int[] Rates = { 60, 72, 90, 120 };
 
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         internal static AnimatorControllerAsset Shipped()
         {

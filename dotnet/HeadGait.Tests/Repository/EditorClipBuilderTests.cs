@@ -21,7 +21,7 @@ namespace HeadGait.Tests
     {
         const string Folder = "Assets/HeadGait Clip Test";
 
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         static PhaseMap ShippedMap => CorrelationTemplate.Load(Path.Combine(Package, GaitAssetFiles.CorTemplate)).PhaseMap;
 

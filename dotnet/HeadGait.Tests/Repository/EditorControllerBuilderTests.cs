@@ -23,7 +23,7 @@ namespace HeadGait.Tests
     {
         const string Path = "Assets/HeadGait Test/HeadGait Legs.controller";
 
-        static string Package => System.IO.Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         static Dictionary<LocomotionState, Motion> Clips()
             => LocomotionController.States.ToDictionary(s => s, s => (Motion)new AnimationClip { name = GaitClips.Name(s) });

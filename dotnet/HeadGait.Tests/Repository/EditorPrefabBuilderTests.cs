@@ -26,7 +26,7 @@ namespace HeadGait.Tests
         const string Folder = "Assets/HeadGait Builder Test";
         const string PackagePath = "Packages/com.headgait.legmotion/";
 
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         static PhaseMap ShippedMap => CorrelationTemplate.Load(Path.Combine(Package, GaitAssetFiles.CorTemplate)).PhaseMap;
 

@@ -14,7 +14,7 @@ namespace HeadGait.Tests
     /// </summary>
     public class HeadClockTests
     {
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         [Test]
         public void OnlyTheHeadClockReadsTheClockHeadSamplesAreStampedOn()

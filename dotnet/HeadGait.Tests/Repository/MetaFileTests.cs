@@ -8,7 +8,7 @@ namespace HeadGait.Tests
     /// <summary>Every file and folder Unity imports from the package and the project's Assets has a valid, unique .meta.</summary>
     public class MetaFileTests
     {
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         [Test]
         public void EveryImportedEntryHasItsOwnValidMeta()

@@ -10,7 +10,7 @@ namespace HeadGait.Tests
     /// relying on another package to pull it in (a project may disable a module no declared dependency needs).</summary>
     public class PackageManifestTests
     {
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         [Test]
         public void EveryModuleThePackageUsesIsADirectDependency()

@@ -10,7 +10,7 @@ namespace HeadGait.Tests
     /// <summary>The study sample's scene: made by the generator, and internally consistent as Unity reads it.</summary>
     public class StudySceneTests
     {
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
         static string Scene => File.ReadAllText(StudyScene.PathIn(Package)).Replace("\r\n", "\n");
 
         [Test]

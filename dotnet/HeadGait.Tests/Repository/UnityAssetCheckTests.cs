@@ -9,7 +9,7 @@ namespace HeadGait.Tests
     /// <summary>The package's Unity assets (controller, clips, prefabs, sample scene) checked without Unity.</summary>
     public class UnityAssetCheckTests
     {
-        static string Package => Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static string Package => RepositoryPaths.Package;
 
         [Test]
         public void ThePackagesAssetsResolveAndAgreeWithTheCore()

@@ -11,7 +11,7 @@ namespace HeadGait.Tests
     /// asmdefs say what Unity needs to hear.</summary>
     public class UnityCompileCheckTests
     {
-        static string Repository => Path.GetFullPath(Path.Combine(Path.GetDirectoryName(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)), "..", ".."));
+        static string Repository => RepositoryPaths.Root;
 
         [TestCase("2.2.0", "2.2.1", true)]
         [TestCase("2.2.0", "2.1.3", false)]
