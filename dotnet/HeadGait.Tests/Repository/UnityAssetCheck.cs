@@ -267,9 +267,12 @@ namespace HeadGait.Tests
                     problems.Add($"{where}: {Path.GetFileName(material)}'s shader guid {shaderGuid} is no .shader in the package");
                     return;
                 }
+                string source = File.ReadAllText(shader);
                 foreach (var pipeline in new[] { ShaderPasses.BuiltIn, ShaderPasses.Universal })
-                    if (!ShaderPasses.Draws(File.ReadAllText(shader), pipeline))
+                    if (!ShaderPasses.Draws(source, pipeline))
                         problems.Add($"{where}: {Path.GetFileName(material)}'s shader {Path.GetFileName(shader)} has no SubShader and Pass the {pipeline} pipeline draws (magenta there)");
+                if (ShaderPasses.Draws(source, ShaderPasses.Universal) && !ShaderPasses.VisibleUnderUrpDepthPriming(source))
+                    problems.Add($"{where}: {Path.GetFileName(material)}'s shader {Path.GetFileName(shader)} is not drawn in URP's depth prepass (no DepthOnly, or no DepthNormals/DepthNormalsOnly pass): invisible under depth priming (ZTest Equal)");
             }
             foreach (var d in docs.Where(d => (d.ClassId == 23 || d.ClassId == 137) && !d.Stripped))
             {
@@ -530,7 +533,13 @@ namespace HeadGait.Tests
     /// under the pipeline with that tag value (URP: UniversalPipeline), one without the tag under any pipeline. A Pass
     /// without "LightMode" is "Always" to the built-in pipeline and "SRPDefaultUnlit" to an SRP; URP's forward renderer
     /// draws SRPDefaultUnlit, UniversalForward and UniversalForwardOnly, the built-in forward path Always, ForwardBase and
-    /// Vertex. Reads the text only (braces, Tags blocks); it does not compile the shader.
+    /// Vertex. Both pipelines render their shadow maps from "ShadowCaster" passes (built-in also finds one in the shader's
+    /// Fallback, Unity's manual, "Shadow casting shader example"; `Fallback Off` gives none). URP's depth prepass draws
+    /// "DepthOnly" passes (DepthOnlyPass), or "DepthNormals" and "DepthNormalsOnly" when a feature needs the normals
+    /// texture (DepthNormalOnlyPass, e.g. SSAO); with depth priming (UniversalRenderer: Forced, or Auto where recommended,
+    /// i.e. not Android/iOS; Forward or Forward+, a base camera, no MSAA) DrawObjectsPass draws the opaques with ZWrite off
+    /// and ZTest Equal, so an opaque the prepass did not draw is not drawn at all. Reads the text only (braces, Tags blocks,
+    /// UsePass, Fallback); it does not compile the shader.
     /// </summary>
     public static class ShaderPasses
     {
@@ -542,25 +551,73 @@ namespace HeadGait.Tests
             [Universal] = ("UniversalPipeline", new[] { "SRPDefaultUnlit", "UniversalForward", "UniversalForwardOnly" }),
         };
 
-        public static bool Draws(string shader, string pipeline)
+        /// <summary>Whether the pipeline draws the shader in its colour pass at all (not magenta).</summary>
+        public static bool Draws(string shader, string pipeline) => LightModes(shader, pipeline).Overlaps(Pipelines[pipeline].lightModes);
+
+        /// <summary>
+        /// Whether the pipeline renders the shader into its shadow maps: a "ShadowCaster" pass (its own, one pulled in by
+        /// UsePass ".../SHADOWCASTER", or, under built-in only, possibly its Fallback's: any Fallback but Off counts).
+        /// </summary>
+        public static bool CastsShadows(string shader, string pipeline)
         {
-            var (pipelineTag, lightModes) = Pipelines[pipeline];
-            string text = Regex.Replace(shader, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
-            // Program bodies may hold braces of their own; they are not ShaderLab. A surface shader's program (#pragma
-            // surface) stands for the ForwardBase/ForwardAdd passes Unity generates from it, which only built-in draws.
-            text = Regex.Replace(text, @"\b(CGPROGRAM|HLSLPROGRAM|CGINCLUDE|HLSLINCLUDE)\b.*?\b(ENDCG|ENDHLSL)\b",
-                m => Regex.IsMatch(m.Value, @"#pragma\s+surface\b") ? "Pass { Tags { \"LightMode\" = \"ForwardBase\" } }" : "", RegexOptions.Singleline);
-            foreach (string sub in Blocks(text, "SubShader"))
+            if (LightModes(shader, pipeline).Contains("ShadowCaster")) return true;
+            return pipeline == BuiltIn && Fallback(shader) != null;
+        }
+
+        /// <summary>
+        /// Whether URP's depth prepass draws the shader: "DepthOnly" (DepthOnlyPass) or, when the normals texture is needed,
+        /// "DepthNormals" / "DepthNormalsOnly" (DepthNormalOnlyPass).
+        /// </summary>
+        public static bool InUrpDepthPrepass(string shader, bool normals)
+        {
+            var modes = LightModes(shader, Universal);
+            return normals ? modes.Contains("DepthNormals") || modes.Contains("DepthNormalsOnly") : modes.Contains("DepthOnly");
+        }
+
+        /// <summary>
+        /// Whether URP shows an opaque of this shader under depth priming, whichever prepass runs: its colour pass is drawn
+        /// with ZTest Equal against the prepass's depth, so the prepass must draw it too (DepthOnly, and DepthNormals or
+        /// DepthNormalsOnly for the normals prepass).
+        /// </summary>
+        public static bool VisibleUnderUrpDepthPriming(string shader) =>
+            Draws(shader, Universal) && InUrpDepthPrepass(shader, false) && InUrpDepthPrepass(shader, true);
+
+        /// <summary>The shader named by a top-level Fallback, or null for none or `Fallback Off`.</summary>
+        public static string Fallback(string shader)
+        {
+            var m = Regex.Match(ShaderLab(shader), @"\bFallback\s+(?:""([^""]*)""|(\w+))", RegexOptions.IgnoreCase);
+            if (!m.Success) return null;
+            string name = m.Groups[1].Success ? m.Groups[1].Value : m.Groups[2].Value;
+            return string.Equals(name, "Off", StringComparison.OrdinalIgnoreCase) ? null : name;
+        }
+
+        /// <summary>The LightModes of every Pass in the SubShaders the pipeline may use (a Pass without the tag as the pipeline reads it).</summary>
+        static HashSet<string> LightModes(string shader, string pipeline)
+        {
+            string pipelineTag = Pipelines[pipeline].tag;
+            var modes = new HashSet<string>(StringComparer.Ordinal);
+            foreach (string sub in Blocks(ShaderLab(shader), "SubShader"))
             {
                 string subTag = Tag(TagsBefore(sub, "Pass"), "RenderPipeline");
                 if (!string.IsNullOrEmpty(subTag) && subTag != pipelineTag) continue;
                 foreach (string pass in Blocks(sub, "Pass"))
-                {
-                    string lightMode = Tag(TagsBefore(pass, null), "LightMode") ?? (pipelineTag == null ? "Always" : "SRPDefaultUnlit");
-                    if (lightModes.Contains(lightMode)) return true;
-                }
+                    modes.Add(Tag(TagsBefore(pass, null), "LightMode") ?? (pipelineTag == null ? "Always" : "SRPDefaultUnlit"));
+                // UsePass "Shader/PASSNAME" copies that pass with its tags; Unity's shadow caster passes are named SHADOWCASTER.
+                if (Regex.IsMatch(sub, @"\bUsePass\s+""[^""]*/SHADOWCASTER""", RegexOptions.IgnoreCase)) modes.Add("ShadowCaster");
             }
-            return false;
+            return modes;
+        }
+
+        /// <summary>
+        /// The ShaderLab text alone: comments removed, and program bodies (which may hold braces of their own) dropped. A
+        /// surface shader's program (#pragma surface) stands for the ForwardBase/ForwardAdd passes Unity generates from it,
+        /// which only built-in draws.
+        /// </summary>
+        static string ShaderLab(string shader)
+        {
+            string text = Regex.Replace(shader, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
+            return Regex.Replace(text, @"\b(CGPROGRAM|HLSLPROGRAM|CGINCLUDE|HLSLINCLUDE)\b.*?\b(ENDCG|ENDHLSL)\b",
+                m => Regex.IsMatch(m.Value, @"#pragma\s+surface\b") ? "Pass { Tags { \"LightMode\" = \"ForwardBase\" } }" : "", RegexOptions.Singleline);
         }
 
         /// <summary>The bodies of every `keyword { ... }` block at any depth.</summary>

@@ -106,6 +106,8 @@ namespace HeadGait.Tests
                 Assert.That(problems, Does.Contain("HeadGait Ground.mat uses built-in shader 46 (Standard), magenta in URP"));
                 Assert.That(problems, Does.Contain("HeadGait Pit.mat's shader UrpOnly.shader has no SubShader and Pass the built-in pipeline draws"));
                 Assert.That(problems, Does.Not.Contain("HeadGait Pit.mat's shader UrpOnly.shader has no SubShader and Pass the URP pipeline draws"));
+                Assert.That(problems, Does.Contain("HeadGait Pit.mat's shader UrpOnly.shader is not drawn in URP's depth prepass"));
+                Assert.That(problems, Does.Not.Contain("HeadGait Primitive.shader is not drawn in URP's depth prepass"));
                 Assert.That(problems, Does.Contain($"transform &{instanceRoot} (a prefab instance's root) is not listed in its father"));
                 Assert.That(problems, Does.Contain("field 'positionLag' is not declared in FollowHead.cs"));
                 Assert.That(problems, Does.Contain($"stripped transform &{instanceRoot} of prefab instance").And.Contain("is not the root Transform of its source prefab"));
@@ -146,6 +148,83 @@ namespace HeadGait.Tests
             const string shadowOnly = "Shader \"Test/Shadow\" { SubShader { Pass { Tags { \"LightMode\" = \"ShadowCaster\" } } } }";
             Assert.That(ShaderPasses.Draws(shadowOnly, ShaderPasses.BuiltIn), Is.False);
             Assert.That(ShaderPasses.Draws(shadowOnly, ShaderPasses.Universal), Is.False);
+        }
+
+        /// <summary>
+        /// The primitives cast shadows in both pipelines (a ShadowCaster pass; `Fallback Off` supplies none) and URP draws
+        /// them in its depth prepass, DepthOnly and DepthNormals: under depth priming URP draws the opaques with ZTest Equal
+        /// against that prepass, so a shader it does not draw there is invisible (URP's DrawObjectsPass, UniversalRenderer).
+        /// </summary>
+        [Test]
+        public void ThePrimitiveShaderCastsShadowsAndIsDrawnInUrpsDepthPrepass()
+        {
+            string shader = PrimitiveMaterials.ShaderSource;
+            Assert.That(ShaderPasses.Fallback(shader), Is.Null, "Fallback Off");
+            Assert.That(ShaderPasses.CastsShadows(shader, ShaderPasses.BuiltIn), Is.True, "built-in shadow caster");
+            Assert.That(ShaderPasses.CastsShadows(shader, ShaderPasses.Universal), Is.True, "URP shadow caster");
+            Assert.That(ShaderPasses.InUrpDepthPrepass(shader, normals: false), Is.True, "DepthOnly");
+            Assert.That(ShaderPasses.InUrpDepthPrepass(shader, normals: true), Is.True, "DepthNormals");
+            Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(shader), Is.True);
+        }
+
+        [Test]
+        public void TheCommittedPrimitiveShaderIsTheGeneratedOne()
+        {
+            string committed = File.ReadAllText(Path.Combine(Package, PrimitiveMaterials.ShaderPath)).Replace("\r\n", "\n");
+            Assert.That(committed, Is.EqualTo(PrimitiveMaterials.ShaderSource.Replace("\r\n", "\n")), "regenerate with `dotnet run --project dotnet/HeadGait.Cli -c Release -- clips`");
+        }
+
+        /// <summary>The pass model on small shaders, so that it cannot pass the primitive shader trivially.</summary>
+        [Test]
+        public void ShadowCastersAndTheUrpDepthPrepassAreReadFromTheLightModes()
+        {
+            // URP-only, colour pass only: drawn, but in no prepass and no shadow map.
+            Assert.That(ShaderPasses.Draws(UrpOnlyShader, ShaderPasses.Universal), Is.True);
+            Assert.That(ShaderPasses.InUrpDepthPrepass(UrpOnlyShader, false), Is.False);
+            Assert.That(ShaderPasses.InUrpDepthPrepass(UrpOnlyShader, true), Is.False);
+            Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(UrpOnlyShader), Is.False);
+            Assert.That(ShaderPasses.CastsShadows(UrpOnlyShader, ShaderPasses.Universal), Is.False);
+            Assert.That(ShaderPasses.CastsShadows(UrpOnlyShader, ShaderPasses.BuiltIn), Is.False);
+
+            // URP-only with DepthOnly (a comment naming DepthNormals does not count): the depth prepass draws it, the normals one not.
+            string urpDepth = UrpOnlyShader.Replace("    }\n}\n",
+                "        // no \"LightMode\" = \"DepthNormals\" pass\n        Pass { Name \"DepthOnly\" Tags { \"LightMode\" = \"DepthOnly\" } ZWrite On ColorMask R }\n    }\n}\n");
+            Assert.That(urpDepth, Is.Not.EqualTo(UrpOnlyShader));
+            Assert.That(ShaderPasses.InUrpDepthPrepass(urpDepth, false), Is.True);
+            Assert.That(ShaderPasses.InUrpDepthPrepass(urpDepth, true), Is.False);
+            Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(urpDepth), Is.False);
+            string urpDepthNormals = urpDepth.Replace("    }\n}\n", "        Pass { Tags { \"LightMode\" = \"DepthNormalsOnly\" } }\n    }\n}\n");
+            Assert.That(ShaderPasses.InUrpDepthPrepass(urpDepthNormals, true), Is.True);
+            Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(urpDepthNormals), Is.True);
+            Assert.That(ShaderPasses.Draws(urpDepthNormals, ShaderPasses.BuiltIn), Is.False);
+
+            // Shadow-only: in both shadow maps, drawn nowhere, so not visible under priming either.
+            const string shadowOnly = "Shader \"Test/Shadow\" { SubShader { Pass { Tags { \"LightMode\" = \"ShadowCaster\" } } } }";
+            Assert.That(ShaderPasses.CastsShadows(shadowOnly, ShaderPasses.BuiltIn), Is.True);
+            Assert.That(ShaderPasses.CastsShadows(shadowOnly, ShaderPasses.Universal), Is.True);
+            Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(shadowOnly), Is.False);
+
+            // A ShadowCaster pass in a URP-tagged SubShader is URP's alone.
+            const string urpShadow = "Shader \"Test/UrpShadow\" { SubShader { Tags { \"RenderPipeline\" = \"UniversalPipeline\" } Pass { Tags { \"LightMode\" = \"ShadowCaster\" } } } }";
+            Assert.That(ShaderPasses.CastsShadows(urpShadow, ShaderPasses.Universal), Is.True);
+            Assert.That(ShaderPasses.CastsShadows(urpShadow, ShaderPasses.BuiltIn), Is.False);
+
+            // Built-in finds a shadow caster in a Fallback; Fallback Off gives none; UsePass pulls one in for both.
+            const string unlit = "Shader \"Test/Unlit\" { SubShader { Pass { CGPROGRAM\n float4 f() { return 0; }\n ENDCG } } FALLBACK_CLAUSE }";
+            string withFallback = unlit.Replace("FALLBACK_CLAUSE", "Fallback \"Legacy Shaders/VertexLit\"");
+            Assert.That(ShaderPasses.Fallback(withFallback), Is.EqualTo("Legacy Shaders/VertexLit"));
+            Assert.That(ShaderPasses.CastsShadows(withFallback, ShaderPasses.BuiltIn), Is.True);
+            Assert.That(ShaderPasses.CastsShadows(withFallback, ShaderPasses.Universal), Is.False);
+            string fallbackOff = unlit.Replace("FALLBACK_CLAUSE", "Fallback Off");
+            Assert.That(ShaderPasses.Fallback(fallbackOff), Is.Null);
+            Assert.That(ShaderPasses.CastsShadows(fallbackOff, ShaderPasses.BuiltIn), Is.False);
+            Assert.That(ShaderPasses.CastsShadows(unlit.Replace("FALLBACK_CLAUSE", ""), ShaderPasses.BuiltIn), Is.False);
+            string usePass = unlit.Replace("} } FALLBACK_CLAUSE", "} UsePass \"Legacy Shaders/VertexLit/SHADOWCASTER\" } Fallback Off");
+            Assert.That(ShaderPasses.CastsShadows(usePass, ShaderPasses.BuiltIn), Is.True);
+            Assert.That(ShaderPasses.CastsShadows(usePass, ShaderPasses.Universal), Is.True);
+            // The unlit pass has no LightMode: URP's colour pass draws it, its prepass does not.
+            Assert.That(ShaderPasses.Draws(fallbackOff, ShaderPasses.Universal), Is.True);
+            Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(fallbackOff), Is.False);
         }
 
         [Test]
