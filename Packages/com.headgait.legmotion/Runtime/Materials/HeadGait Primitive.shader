@@ -7,8 +7,8 @@
 // with whatever of the built-in bias the engine leaves set, possibly with acne.
 // DepthOnly, DepthNormals: URP's depth prepass. With depth priming URP draws opaques with ZTest Equal against that
 // prepass, so without them the primitives would not be drawn at all; they also put the primitives in URP's depth and
-// normals textures (SSAO, depth of field). Their clip position is the colour pass's (UnityObjectToClipPos), so the depths
-// are equal. DepthNormals writes the normalized world-space normal, as URP's Lit does there; it writes no rendering
+// normals textures (SSAO, depth of field). They run the colour pass's vertex function (CGINCLUDE), so the depths are
+// equal. DepthNormals writes the normalized world-space normal, as URP's Lit does there; it writes no rendering
 // layers (_WRITE_RENDERING_LAYERS) and has no octahedron-packed variant. The built-in pipeline draws neither pass.
 // Written against Unity's sources and manual; not compiled here (no Unity editor).
 Shader "HeadGait/Primitive"
@@ -20,39 +20,45 @@ Shader "HeadGait/Primitive"
     SubShader
     {
         Tags { "RenderType" = "Opaque" "Queue" = "Geometry" }
+
+        // Shared by every pass: the colour, DepthOnly and DepthNormals passes use the same vertex function, so the
+        // prepass's depths equal the colour pass's.
+        CGINCLUDE
+        #include "UnityCG.cginc"
+
+        struct appdata
+        {
+            float4 vertex : POSITION;
+            float3 normal : NORMAL;
+            UNITY_VERTEX_INPUT_INSTANCE_ID
+        };
+
+        struct v2f
+        {
+            float4 pos : SV_POSITION;
+            float3 normal : TEXCOORD0;
+            UNITY_VERTEX_OUTPUT_STEREO
+        };
+
+        v2f vert(appdata v)
+        {
+            v2f o;
+            UNITY_SETUP_INSTANCE_ID(v);
+            UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
+            o.pos = UnityObjectToClipPos(v.vertex);
+            o.normal = UnityObjectToWorldNormal(v.normal);
+            return o;
+        }
+        ENDCG
+
         Pass
         {
             CGPROGRAM
             #pragma vertex vert
             #pragma fragment frag
             #pragma multi_compile_instancing
-            #include "UnityCG.cginc"
 
             fixed4 _Color;
-
-            struct appdata
-            {
-                float4 vertex : POSITION;
-                float3 normal : NORMAL;
-                UNITY_VERTEX_INPUT_INSTANCE_ID
-            };
-
-            struct v2f
-            {
-                float4 pos : SV_POSITION;
-                float3 normal : TEXCOORD0;
-                UNITY_VERTEX_OUTPUT_STEREO
-            };
-
-            v2f vert(appdata v)
-            {
-                v2f o;
-                UNITY_SETUP_INSTANCE_ID(v);
-                UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
-                o.pos = UnityObjectToClipPos(v.vertex);
-                o.normal = UnityObjectToWorldNormal(v.normal);
-                return o;
-            }
 
             fixed4 frag(v2f i) : SV_Target
             {
@@ -70,35 +76,27 @@ Shader "HeadGait/Primitive"
             Tags { "LightMode" = "ShadowCaster" }
 
             CGPROGRAM
-            #pragma vertex vert
-            #pragma fragment frag
+            #pragma vertex vertShadow
+            #pragma fragment fragShadow
             #pragma multi_compile_shadowcaster
             #pragma multi_compile_instancing
-            #include "UnityCG.cginc"
 
-            struct appdata
-            {
-                float4 vertex : POSITION;
-                float3 normal : NORMAL;
-                UNITY_VERTEX_INPUT_INSTANCE_ID
-            };
-
-            struct v2f
+            struct v2f_shadow
             {
                 V2F_SHADOW_CASTER;
                 UNITY_VERTEX_OUTPUT_STEREO
             };
 
-            v2f vert(appdata v)
+            v2f_shadow vertShadow(appdata v)
             {
-                v2f o;
+                v2f_shadow o;
                 UNITY_SETUP_INSTANCE_ID(v);
                 UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
                 TRANSFER_SHADOW_CASTER_NORMALOFFSET(o)
                 return o;
             }
 
-            float4 frag(v2f i) : SV_Target
+            float4 fragShadow(v2f_shadow i) : SV_Target
             {
                 SHADOW_CASTER_FRAGMENT(i)
             }
@@ -114,32 +112,10 @@ Shader "HeadGait/Primitive"
 
             CGPROGRAM
             #pragma vertex vert
-            #pragma fragment frag
+            #pragma fragment fragDepth
             #pragma multi_compile_instancing
-            #include "UnityCG.cginc"
 
-            struct appdata
-            {
-                float4 vertex : POSITION;
-                UNITY_VERTEX_INPUT_INSTANCE_ID
-            };
-
-            struct v2f
-            {
-                float4 pos : SV_POSITION;
-                UNITY_VERTEX_OUTPUT_STEREO
-            };
-
-            v2f vert(appdata v)
-            {
-                v2f o;
-                UNITY_SETUP_INSTANCE_ID(v);
-                UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
-                o.pos = UnityObjectToClipPos(v.vertex);
-                return o;
-            }
-
-            float4 frag(v2f i) : SV_Target
+            float4 fragDepth(v2f i) : SV_Target
             {
                 return float4(i.pos.z, 0, 0, 0);
             }
@@ -154,35 +130,10 @@ Shader "HeadGait/Primitive"
 
             CGPROGRAM
             #pragma vertex vert
-            #pragma fragment frag
+            #pragma fragment fragNormals
             #pragma multi_compile_instancing
-            #include "UnityCG.cginc"
 
-            struct appdata
-            {
-                float4 vertex : POSITION;
-                float3 normal : NORMAL;
-                UNITY_VERTEX_INPUT_INSTANCE_ID
-            };
-
-            struct v2f
-            {
-                float4 pos : SV_POSITION;
-                float3 normal : TEXCOORD0;
-                UNITY_VERTEX_OUTPUT_STEREO
-            };
-
-            v2f vert(appdata v)
-            {
-                v2f o;
-                UNITY_SETUP_INSTANCE_ID(v);
-                UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(o);
-                o.pos = UnityObjectToClipPos(v.vertex);
-                o.normal = UnityObjectToWorldNormal(v.normal);
-                return o;
-            }
-
-            float4 frag(v2f i) : SV_Target
+            float4 fragNormals(v2f i) : SV_Target
             {
                 return float4(normalize(i.normal), 0);
             }
