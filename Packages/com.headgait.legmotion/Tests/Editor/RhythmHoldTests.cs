@@ -172,6 +172,54 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AWalkResumedSoonAfterAnEstablishedOneLetGoIsHeldAsThatWalk()
+        {
+            // Walks 3 s at 0.5-s steps, lets go (rhythm failing beyond its grace, the head moving or stilled), then the
+            // classifier walks again from `resume` s for 0.2 s and says standing with the rhythm still failing.
+            bool HeldAfterResume(double resume, bool stilledAtLetGo, double resumeWithin)
+            {
+                var hold = new RhythmHold(PhaseMap.Perry, new RhythmHoldSettings { ResumeWithin = resumeWithin });
+                for (int i = 0; i <= 300; i++) hold.Apply(GaitPrediction.Walking(i * 0.01, i * 0.01, 0.5, 1, PhaseMap.Perry), default);
+                var failing = new RhythmReading(false, 0.5);
+                Assert.That(hold.Apply(GaitPrediction.Standing(3.01), new RhythmReading(false, 0.5, stilledAtLetGo)).IsWalking, Is.EqualTo(!stilledAtLetGo));
+                Assert.That(hold.Apply(GaitPrediction.Standing(3.6), failing).IsWalking, Is.False, "let go after one step");
+                for (int i = 0; i <= 20; i++) hold.Apply(GaitPrediction.Walking(resume + i * 0.01, i * 0.01, 0.5, 1, PhaseMap.Perry), default);
+                return hold.Apply(GaitPrediction.Standing(resume + 0.21), failing).IsWalking;
+            }
+            // The walk back after a turn: resumed within the rhythm's span of the let-go, it rides out a step as the walk did.
+            Assert.That(new RhythmHoldSettings().ResumeWithin, Is.EqualTo(new RhythmHoldSettings().EstablishedAfter));
+            Assert.That(HeldAfterResume(4.0, false, new RhythmHoldSettings().ResumeWithin), Is.True);
+            Assert.That(HeldAfterResume(4.0, false, 0), Is.False, "off: a young walk");
+            // Not after a stop (the head stilled), nor long after the let-go: a young walk, let go at its first refusal.
+            Assert.That(HeldAfterResume(4.0, true, new RhythmHoldSettings().ResumeWithin), Is.False);
+            Assert.That(HeldAfterResume(3.6 + 2.6, false, new RhythmHoldSettings().ResumeWithin), Is.False);
+        }
+
+        [Test]
+        public void TheGlassesUpAndGosWalkBackAfterTheTurnIsShownMore()
+        {
+            // A real glasses wearer's timed up-and-go (d2 user 9): each walk back begins as the hold lets go of the turn, and
+            // the shipped COR's first walks there were young and dropped (shown 1.8 s after the first step of one).
+            var rec = RecordingCsv.Load(TestData.GlassesFiles("cg2_u09_*_tug.csv")[0]);
+            var reference = RhythmReference.Of(rec);
+            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            double Shown(RhythmHoldSettings hold)
+            {
+                var result = ReplayEvaluator.Run(rec, models.Create("cor", out _), keepTrace: true, holdSettings: hold);
+                int inBouts = 0, walking = 0;
+                foreach (var f in result.Frames)
+                {
+                    if (!reference.IsWalking(f.Time)) continue;
+                    inBouts++;
+                    if (f.State != LocomotionState.Standing) walking++;
+                }
+                return (double)walking / inBouts;
+            }
+            double resumed = Shown(new RhythmHoldSettings()), young = Shown(new RhythmHoldSettings { ResumeWithin = 0 });
+            Assert.That(resumed, Is.GreaterThan(young + 0.03), $"resumed {resumed:P1}, young {young:P1}");
+        }
+
+        [Test]
         public void AStopIsNotHeld()
         {
             // The generated start-stop walk: the avatar stands within a second of every stop, held or not.
