@@ -165,6 +165,7 @@ namespace HeadGait.Cli
                 ("steps shown / the signal's cadence (median)", x => Num(x.CadenceRatio, "F2")),
                 ("consecutive steps alternating feet", x => Pct(x.Alternating)),
                 ("walking fragments per walking file (median)", x => Num(x.Fragments, "F0")),
+                ($"every bout shown walking within {RealWorldSummary.StandingStarts.Within:0.0} s of its first step, walking files / TUG", x => $"{Pct(x.WalkingBoutsOnTime)} / {Pct(x.TugBoutsOnTime)}"),
                 ("bouts met standing, walking files / TUG", x => $"{x.WalkingStarts.Count} / {x.TugStarts.Count}"),
                 ("  their delay, median / 90th pct (s)", x => $"{Num(x.WalkingStarts.Median, "F2")}/{Num(x.WalkingStarts.Ninetieth, "F2")} | {Num(x.TugStarts.Median, "F2")}/{Num(x.TugStarts.Ninetieth, "F2")}"),
                 ($"  started within {RealWorldSummary.StandingStarts.Within:0.0} s", x => $"{Pct(x.WalkingStarts.ShareWithin)} / {Pct(x.TugStarts.ShareWithin)}"),
@@ -184,7 +185,9 @@ namespace HeadGait.Cli
             if (still.Length > 0) Console.WriteLine($"The signal's rhythm in the still activities (should be near 0): {still}.");
             Console.WriteLine("Walking time: where the signal itself shows a regular step rhythm (SMV repeating one step and one stride later, the head");
             Console.WriteLine("swaying to the other side each step; 4 s around each moment, edges at the first and last step); cadence: its step period.");
-            Console.WriteLine("Steps shown count the avatar's foot contacts while both walk. Bouts met standing: bouts after >= 1 s without walking (or");
+            Console.WriteLine("Steps shown count the avatar's foot contacts while both walk. Every bout: the avatar walking at some moment from the");
+            Console.WriteLine($"bout's first step to {RealWorldSummary.StandingStarts.Within:0.0} s after it, whether it met the bout standing or walked into it (as after a turn).");
+            Console.WriteLine("Bouts met standing: bouts after >= 1 s without walking (or");
             Console.WriteLine($"the recording's start) with the avatar standing {RealWorldScore.EarlyStart:0.0} s before the first step; delay from the first step to the");
             Console.WriteLine($"avatar leaving Standing (0 within those {RealWorldScore.EarlyStart:0.0} s before it; the bout's length when it never does).");
             Console.WriteLine("A bout's first step is a smoothed edge, not a contact: the first moment whose next 0.5 s of SMV spreads at half the");
@@ -194,12 +197,13 @@ namespace HeadGait.Cli
 
         static void WriteCsv(string path, List<RealWorldScore> scores)
         {
-            var lines = new List<string> { "recording,person,activity,classifier,seconds,signal_walking_s,signal_cadence_spm,avatar_walking_of_signal,classifier_walking_of_signal,avatar_walking_s,classifier_walking_s,steps_shown,signal_steps,cadence_ratio,consecutive_steps,alternating_steps,fragments,signal_bouts,standing_start_delays_s" };
+            var lines = new List<string> { "recording,person,activity,classifier,seconds,signal_walking_s,signal_cadence_spm,avatar_walking_of_signal,classifier_walking_of_signal,avatar_walking_s,classifier_walking_s,steps_shown,signal_steps,cadence_ratio,consecutive_steps,alternating_steps,fragments,signal_bouts,standing_start_delays_s,bouts_from_first_step,bouts_shown_on_time" };
             foreach (var x in scores)
                 lines.Add(string.Join(",", Csv(x.Recording), Csv(x.Person), x.Activity, x.Classifier,
                     F(x.Seconds), F(x.ReferenceWalkingSeconds), F(x.SignalCadence), F(x.AvatarWalkingShare), F(x.ClassifierWalkingShare),
                     F(x.AvatarWalkingSeconds), F(x.ClassifierWalkingSeconds), x.Contacts, F(x.SignalSteps), F(x.CadenceRatio),
-                    x.ConsecutiveContacts, x.AlternatingContacts, x.Fragments, x.ReferenceBouts, string.Join(" ", x.StandingStartDelays.Select(F))));
+                    x.ConsecutiveContacts, x.AlternatingContacts, x.Fragments, x.ReferenceBouts, string.Join(" ", x.StandingStartDelays.Select(F)),
+                    x.BoutsFromFirstStep, x.BoutsShownOnTime));
             AtomicFile.WriteAllText(path, string.Join("\n", lines) + "\n");
             Console.WriteLine($"Wrote {scores.Count} rows to {path}");
         }

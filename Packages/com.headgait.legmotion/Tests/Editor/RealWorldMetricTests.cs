@@ -212,6 +212,29 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void EveryBoutCountsAsShownOnTimeWhenTheAvatarWalksWithin03SOfItsFirstStepMetStandingOrWalkedInto()
+        {
+            // Walked into from before (the second bout, as after a turn) counts as on time; the first, met standing 0.2 s
+            // after its first step, too.
+            var (rec, reference, p, f) = TwoBouts(22, (r, t) => t >= r.Bouts[0].Start + 0.2 && t < r.Bouts[r.Bouts.Count - 1].End);
+            var carried = RealWorldScore.Of(rec, reference, "carried", p, f);
+            Assert.That((carried.BoutsFromFirstStep, carried.BoutsShownOnTime), Is.EqualTo((2, 2)));
+            // 0.7 s late at each: neither; 0.1 s late: both.
+            var (rec2, reference2, p2, f2) = TwoBouts(21, (r, t) => r.Bouts.Any(b => t >= b.Start + 0.7 && t < b.End));
+            var late = RealWorldScore.Of(rec2, reference2, "late", p2, f2);
+            Assert.That((late.BoutsFromFirstStep, late.BoutsShownOnTime), Is.EqualTo((2, 0)));
+            var (rec3, reference3, p3, f3) = TwoBouts(21, (r, t) => r.Bouts.Any(b => t >= b.Start + 0.1 && t < b.End));
+            Assert.That(RealWorldScore.Of(rec3, reference3, "prompt", p3, f3).BoutsShownOnTime, Is.EqualTo(2));
+            // An avatar that walked before the first step but stood at it, and starts late, is not on time.
+            var (rec4, reference4, p4, f4) = TwoBouts(21, (r, t) => r.Bouts.Any(b => (t >= b.Start - 0.5 && t < b.Start - 0.1) || (t >= b.Start + 0.7 && t < b.End)));
+            Assert.That(RealWorldScore.Of(rec4, reference4, "stood at it", p4, f4).BoutsShownOnTime, Is.EqualTo(0));
+            // Pooled over files by the summary: 2 of 4.
+            var summary = RealWorldSummary.Of("x", new[] { carried, late });
+            Assert.That((summary.WalkingBouts, summary.WalkingBoutsOnTime), Is.EqualTo((4, 0.5)));
+            Assert.That(summary.TugBoutsOnTime, Is.NaN);
+        }
+
+        [Test]
         public void ABoutTheAvatarNeverWalksCountsItsWholeLength()
         {
             var (rec, reference, p, f) = TwoBouts(23, (r, t) => false);

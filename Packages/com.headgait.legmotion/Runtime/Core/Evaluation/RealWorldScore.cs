@@ -73,6 +73,13 @@ namespace HeadGait
         public List<double> StandingStartDelays = new List<double>();
         /// <summary>The same for the classifier: bouts at whose first step it predicts standing, and how long until it predicts walking (s).</summary>
         public List<double> ClassifierStandingStartDelays = new List<double>();
+        /// <summary>
+        /// Every bout whose first step the replay holds, and of them those the avatar shows walking within
+        /// <see cref="RealWorldSummary.StandingStarts.Within"/> s of that step (walking at some frame from the step to then):
+        /// the ear-worn judge's "each straight stretch shown walking within 0.3 s of its first step", which counts the bouts
+        /// after a turn or pause that the avatar walks into as well as those it meets standing.
+        /// </summary>
+        public int BoutsFromFirstStep, BoutsShownOnTime;
 
         /// <summary>Signal time without walking (s) before a bout for its start to count as a start.</summary>
         public const double StillBeforeBout = 1.0;
@@ -164,6 +171,11 @@ namespace HeadGait
             for (int b = 0; b < reference.Bouts.Count; b++)
             {
                 var (start, end) = reference.Bouts[b];
+                if (start >= first)
+                {
+                    score.BoutsFromFirstStep++;
+                    if (WalksBetween(frames, start, start + RealWorldSummary.StandingStarts.Within)) score.BoutsShownOnTime++;
+                }
                 double before = b > 0 ? reference.Bouts[b - 1].End : double.NegativeInfinity;
                 if (start - before < StillBeforeBout || start < first) continue;
                 double? standing = StandingStartDelay(times, i => frames[i].State != LocomotionState.Standing, start, end);
@@ -172,6 +184,17 @@ namespace HeadGait
                 if (predicted.HasValue) score.ClassifierStandingStartDelays.Add(predicted.Value);
             }
             return score;
+        }
+
+        /// <summary>Whether the avatar walks (any state but Standing) at some frame from <paramref name="from"/> to <paramref name="until"/>.</summary>
+        static bool WalksBetween(IReadOnlyList<AnimatorFrame> frames, double from, double until)
+        {
+            foreach (var f in frames)
+            {
+                if (f.Time > until) break;
+                if (f.Time >= from && f.State != LocomotionState.Standing) return true;
+            }
+            return false;
         }
 
         /// <summary>

@@ -28,6 +28,9 @@ namespace HeadGait
         public StandingStarts WalkingStarts = StandingStarts.Of(Array.Empty<double>()), TugStarts = StandingStarts.Of(Array.Empty<double>());
         /// <summary>The classifier's own (<see cref="RealWorldScore.ClassifierStandingStartDelays"/>), walking files.</summary>
         public StandingStarts ClassifierStarts = StandingStarts.Of(Array.Empty<double>());
+        /// <summary>Every bout, walking files and TUG: how many, and the share shown walking within <see cref="StandingStarts.Within"/> s of its first step (<see cref="RealWorldScore.BoutsShownOnTime"/>).</summary>
+        public int WalkingBouts, TugBouts;
+        public double WalkingBoutsOnTime = double.NaN, TugBoutsOnTime = double.NaN;
         /// <summary>Share of the walking files' time that the signal shows walking, and their median cadence (steps/min).</summary>
         public double ReferenceShare = double.NaN, SignalCadence = double.NaN;
         /// <summary>Per still activity: the avatar's and the classifier's walking share of all its time, and the signal's.</summary>
@@ -70,6 +73,7 @@ namespace HeadGait
             s.ReferenceBouts = GaitMetrics.Median(walking.Select(x => (double)x.ReferenceBouts).ToList());
             s.WalkingStarts = StandingStarts.Of(walking.SelectMany(x => x.StandingStartDelays));
             s.ClassifierStarts = StandingStarts.Of(walking.SelectMany(x => x.ClassifierStandingStartDelays));
+            (s.WalkingBouts, s.WalkingBoutsOnTime) = OnTime(walking);
             double seconds = walking.Sum(x => x.Seconds);
             if (seconds > 0) s.ReferenceShare = refSeconds / seconds;
             s.SignalCadence = GaitMetrics.Median(walking.Select(x => x.SignalCadence).Where(v => !double.IsNaN(v)).ToList());
@@ -89,7 +93,14 @@ namespace HeadGait
             }
             if (tugRef > 0) s.TugAvatarOfReference = tug.Sum(x => x.AvatarWalkingInReference) / tugRef;
             s.TugStarts = StandingStarts.Of(tug.SelectMany(x => x.StandingStartDelays));
+            (s.TugBouts, s.TugBoutsOnTime) = OnTime(tug);
             return s;
+        }
+
+        static (int Bouts, double Share) OnTime(IReadOnlyCollection<RealWorldScore> scores)
+        {
+            int bouts = scores.Sum(x => x.BoutsFromFirstStep);
+            return (bouts, bouts > 0 ? (double)scores.Sum(x => x.BoutsShownOnTime) / bouts : double.NaN);
         }
 
         /// <summary>Delays from a bout's first step to a standing avatar leaving Standing: how many, median, 90th percentile, share within <see cref="Within"/>.</summary>
