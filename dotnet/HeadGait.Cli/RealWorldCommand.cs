@@ -24,7 +24,7 @@ namespace HeadGait.Cli
             var perPerson = new Option<string>("--per-person") { Description = "also write every recording's scores (person, activity, classifier) to this CSV" };
             var cv = new Option<string>("--cv") { Description = "person: leave one person out: each person's recordings are judged by walking gates trained on the --train recordings and the other people's recordings in --data (as `train --real` trains them); the rest of each model as shipped" };
             var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
-            var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (defaults 0.15 s, 0, 0: any time); replaces the shipped setting (THR 0.75,0.15,1,3; COR off)" };
+            var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S[,AFTER_SHOWN_S]]]] (defaults 0.15 s, 0, 0: any time, 0: after any walk); replaces the shipped setting (THR 0.75,0.15,1,3; COR 0.75,0.15,1,3,2.5)" };
             var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, the start of bouts met standing and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
                 data, classifier, models, perPerson, cv, train, firstStep,
@@ -33,19 +33,20 @@ namespace HeadGait.Cli
             return command;
         }
 
-        /// <summary>Reads --first-step (MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]]); null when not given.</summary>
+        /// <summary>Reads --first-step (MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S[,AFTER_SHOWN_S]]]]); null when not given.</summary>
         static FirstStepStartSettings ParseFirstStep(string text)
         {
             if (string.IsNullOrWhiteSpace(text)) return null;
             var parts = text.Split(',');
             var values = new double[parts.Length];
             for (int i = 0; i < parts.Length; i++)
-                if (parts.Length > 4 || !double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out values[i]) || !(values[i] >= 0) || values[i] > 100)
-                    throw new UsageException($"--first-step '{text}' is not MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S]]] (up to four numbers of 0 to 100)");
+                if (parts.Length > 5 || !double.TryParse(parts[i].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out values[i]) || !(values[i] >= 0) || values[i] > 100)
+                    throw new UsageException($"--first-step '{text}' is not MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S[,AFTER_SHOWN_S]]]] (up to five numbers of 0 to 100)");
             var s = new FirstStepStartSettings { Margin = values[0] };
             if (values.Length > 1) s.ConfirmWithin = values[1];
             if (values.Length > 2) s.KeepMargin = values[2];
             if (values.Length > 3) s.ResumeWithin = values[3];
+            if (values.Length > 4) s.ResumeAfterShown = values[4];
             return s;
         }
 

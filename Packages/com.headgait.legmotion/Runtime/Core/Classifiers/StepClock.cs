@@ -342,6 +342,8 @@ namespace HeadGait
         readonly StanceLatch stance = new StanceLatch();
         readonly FirstStepStart firstStep;
         double lastWalking = double.NegativeInfinity; // when a walk was last predicted
+        double shownFrom = double.NaN;                // when the walk being predicted began (NaN while standing is)
+        double lastShownFor;                          // how long the last walk predicted lasted (s)
         double lastContact;
         double period;
         double sideEvidence;
@@ -395,6 +397,8 @@ namespace HeadGait
             rhythmCountdown = 0;
             firstStep.Reset();
             lastWalking = double.NegativeInfinity;
+            shownFrom = double.NaN;
+            lastShownFor = 0;
             tilt.Reset();
             still.Reset();
             hiddenContacts = 0;
@@ -486,7 +490,7 @@ namespace HeadGait
         public bool MayStartOnFirstStep(double now, double gateLogOdds)
             => firstStep.Waiting && IsWalking(now)
                 ? gateLogOdds > -settings.FirstStep.Margin
-                : firstStep.Allows(IsWalking(now), gateLogOdds, now - lastWalking) && !(settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange)
+                : firstStep.Allows(IsWalking(now), gateLogOdds, now - lastWalking, lastShownFor) && !(settings.MaxStartTiltChange > 0 && tilt.Change > settings.MaxStartTiltChange)
                     && !still.RefusesStart(tilt.Reading, settings.StillStartMaxBend);
 
         /// <summary>
@@ -733,10 +737,13 @@ namespace HeadGait
         {
             if (!IsWalking(now) || hiddenContacts > 0)
             {
+                if (!double.IsNaN(shownFrom)) lastShownFor = lastWalking - shownFrom;
+                shownFrom = double.NaN;
                 reported = double.NaN;
                 stance.Reset();
                 return GaitPrediction.Standing(now, confidence);
             }
+            if (double.IsNaN(shownFrom)) shownFrom = now;
             lastWalking = now;
             double s = StridePosition(now);
             if (!double.IsNaN(reported))
