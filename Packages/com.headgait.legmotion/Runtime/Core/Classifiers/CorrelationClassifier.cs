@@ -125,8 +125,7 @@ namespace HeadGait
         /// <see cref="ReplaceMargin"/>) slow 31.7 %, gestures 1.58 %, glasses standing 0.94 to 0.95 %, picking up 1.70 %
         /// (see the measurements log).
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 3, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85,
-            FirstStep = new FirstStepStartSettings { Margin = 0.75, ConfirmWithin = 0.15, KeepMargin = 1, ResumeWithin = 3, ResumeAfterShown = 2.5 } };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 3, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85 };
 
         /// <summary>
         /// A full match (r at or above the threshold) that beats the last contact's r by this much, but comes too soon after it
