@@ -16,7 +16,7 @@ namespace HeadGait.Tests
     public class CalibrationTests
     {
         static GaitModels shipped;
-        static GaitModels Shipped => shipped ?? (shipped = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)));
+        static GaitModels Shipped => shipped ?? (shipped = TestData.ShippedModels());
 
         internal static Recording Unlabelled(Recording r) => new Recording(r.Name, r.Samples.Select(s => new RecordedSample(s.Imu)).ToList());
 

@@ -471,7 +471,7 @@ namespace HeadGait.Tests
         public void AStepDueNowMayMatchALittleWorseThanTheThreshold()
         {
             // The committed template, learned from people, matches the generated walker's steps at r of about 0.8 to 0.95.
-            var template = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)).Correlation;
+            var template = TestData.ShippedModels().Correlation;
             var rec = TestData.Eval("walk_straight");
             var found = new List<double>();
             var open = new CorrelationClassifier(template, new CorrelationSettings { MinCorrelationOverride = 0.3, TrackingMargin = 0 });
@@ -498,7 +498,7 @@ namespace HeadGait.Tests
             Assert.That(tracking.recall, Is.GreaterThan(strict.recall));
         }
 
-        static GaitModels Shipped => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+        static GaitModels Shipped => TestData.ShippedModels();
 
         static Recording RealClip(string name)
         {

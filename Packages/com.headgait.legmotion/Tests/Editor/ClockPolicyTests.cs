@@ -257,7 +257,7 @@ namespace HeadGait.Tests
         [TestCase("blstm", 1.6)]
         public void EveryClassifierComesBackFromExtremeRatesAndEpochClocks(string name, double within)
         {
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var models = TestData.ShippedModels();
             var walk = Walk(8);
             foreach (double rate in new[] { 1.0, 9.5, 10.0, 2000.0, -1 })
             {

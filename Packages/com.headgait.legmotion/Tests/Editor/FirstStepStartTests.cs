@@ -132,7 +132,7 @@ namespace HeadGait.Tests
         public void ShippedThrStartsTheGlassesWalkersBoutsSooner()
         {
             var files = TestData.GlassesFiles("*_walking.csv");
-            var shipped = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)).Threshold;
+            var shipped = TestData.ShippedModels().Threshold;
             Assert.That(shipped.Clock.FirstStep.Enabled, Is.True, "THR ships the first-step start");
             var off = shipped.Clone();
             off.Clock.FirstStep = new FirstStepStartSettings();
@@ -162,7 +162,7 @@ namespace HeadGait.Tests
         public void TheLearnedClassifiersStepClockTakesNoFirstStepStart()
         {
             var files = TestData.GlassesFiles("cg2_u0*_walking.csv").Take(3).ToList();
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var models = TestData.ShippedModels();
             Assert.That(models.Threshold.Clock.FirstStep.Enabled, Is.True);
             var off = models.Threshold.Clone();
             off.Clock.FirstStep = new FirstStepStartSettings();

@@ -100,7 +100,7 @@ namespace HeadGait.Tests
         [TestCase(GaitModels.SvmFile)]
         public void MutatedModelFilesLoadOrFailNamingTheFile(string file)
         {
-            var good = File.ReadAllBytes(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), file));
+            var good = File.ReadAllBytes(Path.Combine(TestData.ModelsFolder, file));
             var r = new DeterministicRandom(3);
             int header = Math.Min(good.Length, 2000);
             for (int i = 0; i < Cases(60, 2000); i++)
@@ -167,7 +167,7 @@ namespace HeadGait.Tests
         [TestCase("blstm", 1.6)]
         public void AdversarialStreamsNeverThrowNorStopCleanWalkingFromBeingSeen(string name, double within)
         {
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var models = TestData.ShippedModels();
             int streams = Cases(16, 64), stuck = 0;
             var late = new List<string>();
             for (int k = 0; k < streams; k++)

@@ -19,9 +19,7 @@ namespace HeadGait.Tests
             get
             {
                 if (shipped != null) return shipped;
-                string models = SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory);
-                Assert.That(models, Is.Not.Null, "Models/ not found above the test directory");
-                return shipped = CorrelationTemplate.Load(Path.Combine(models, GaitModels.CorrelationFile));
+                return shipped = CorrelationTemplate.Load(Path.Combine(TestData.ModelsFolder, GaitModels.CorrelationFile));
             }
         }
 

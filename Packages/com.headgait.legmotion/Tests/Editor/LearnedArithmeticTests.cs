@@ -12,7 +12,7 @@ namespace HeadGait.Tests
     /// </summary>
     public class LearnedArithmeticTests
     {
-        static string ModelsFolder => SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found");
+        static string ModelsFolder => TestData.ModelsFolder;
 
         static ModelFile Model(string file) => ModelFile.Load(Path.Combine(ModelsFolder, file));
 

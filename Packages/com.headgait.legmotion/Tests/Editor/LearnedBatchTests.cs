@@ -12,8 +12,7 @@ namespace HeadGait.Tests
     /// </summary>
     public class LearnedBatchTests
     {
-        static GaitModels Models => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)
-            ?? throw new AssertionException("package Models/ folder not found"));
+        static GaitModels Models => TestData.ShippedModels();
 
         static LearnedClassifier Create(GaitModels models, string kind)
             => kind == SvmClassifier.Kind ? new SvmClassifier(models.Svm) : (LearnedClassifier)new BlstmClassifier(models.Blstm);

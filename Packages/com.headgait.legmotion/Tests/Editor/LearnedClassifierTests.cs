@@ -11,7 +11,7 @@ namespace HeadGait.Tests
 {
     public class LearnedClassifierTests
     {
-        static string Models => SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found");
+        static string Models => TestData.ModelsFolder;
 
         static string ModelPath(string file) => Path.Combine(Models, file);
 
@@ -428,7 +428,7 @@ namespace HeadGait.Tests
 
     public class ModelFileTests
     {
-        static byte[] Blstm() => File.ReadAllBytes(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.BlstmFile));
+        static byte[] Blstm() => File.ReadAllBytes(Path.Combine(TestData.ModelsFolder, GaitModels.BlstmFile));
 
         static ModelFormatException Refused(byte[] bytes)
             => Assert.Throws<ModelFormatException>(() => new BlstmClassifier(ModelFile.Parse(bytes, "broken.bytes")));
@@ -496,7 +496,7 @@ namespace HeadGait.Tests
             Directory.CreateDirectory(dir);
             try
             {
-                string models = SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory);
+                string models = TestData.ModelsFolder;
                 File.Copy(Path.Combine(models, GaitModels.ThresholdFile), Path.Combine(dir, GaitModels.ThresholdFile));
                 File.Copy(Path.Combine(models, GaitModels.CorrelationFile), Path.Combine(dir, GaitModels.CorrelationFile));
                 var half = Blstm();
@@ -526,7 +526,7 @@ namespace HeadGait.Tests
         [TestCase("blstm")]
         public void AWindowTheWalkingGateRefusesIsStandingWhateverTheModelScores(string name)
         {
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var models = TestData.ShippedModels();
             var rec = TestData.Eval("start_stop");
             var gated = (LearnedClassifier)models.Create(name, out _);
             Assert.That(gated.Gate, Is.Not.Null, "headgait train writes the walking gate into the committed model file");

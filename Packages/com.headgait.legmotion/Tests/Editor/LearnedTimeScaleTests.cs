@@ -14,7 +14,7 @@ namespace HeadGait.Tests
     public class LearnedTimeScaleTests
     {
         static GaitModels shipped;
-        static GaitModels Shipped => shipped ?? (shipped = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory)));
+        static GaitModels Shipped => shipped ?? (shipped = TestData.ShippedModels());
 
         /// <summary>A window of <paramref name="length"/> samples at 100 Hz of a bounce of period <paramref name="period"/> (s).</summary>
         static SignalWindow Bounce(int length, double period)

@@ -14,7 +14,7 @@ namespace HeadGait.Tests
     /// </summary>
     public class LearnedWalkStartTests
     {
-        static GaitModels Models => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+        static GaitModels Models => TestData.ShippedModels();
 
         static PhaseFilterSettings Settings(string kind, bool freshWalkRules)
         {

@@ -11,7 +11,7 @@ namespace HeadGait.Tests
     /// </summary>
     public class ModelValidationTests
     {
-        static string ModelsFolder => SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory);
+        static string ModelsFolder => TestData.ModelsFolder;
 
         string folder;
 

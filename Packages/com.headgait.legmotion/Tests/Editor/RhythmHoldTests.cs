@@ -202,7 +202,7 @@ namespace HeadGait.Tests
             // the shipped COR's first walks there were young and dropped (shown 1.8 s after the first step of one).
             var rec = RecordingCsv.Load(TestData.GlassesFiles("cg2_u09_*_tug.csv")[0]);
             var reference = RhythmReference.Of(rec);
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            var models = TestData.ShippedModels();
             double Shown(RhythmHoldSettings hold)
             {
                 var result = ReplayEvaluator.Run(rec, models.Create("cor", out _), keepTrace: true, holdSettings: hold);

@@ -23,7 +23,7 @@ namespace HeadGait.Tests
         [TestCase("blstm")]
         public void ARealWalkSampledAt200HzIsShownAsAt100Hz(string kind)
         {
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory));
+            var models = TestData.ShippedModels();
             foreach (var file in TestData.GlassesFiles("cg2_u01_*.csv"))
             {
                 var at100 = RecordingCsv.Load(file);

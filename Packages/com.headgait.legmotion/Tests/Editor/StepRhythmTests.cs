@@ -343,7 +343,7 @@ namespace HeadGait.Tests
         public void BendingDownToPickSomethingUpStartsNoWalkOfTheLearnedClassifiers(bool svm)
         {
             // Without the walking gate the model's word alone would walk through each straightening up.
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            var models = TestData.ShippedModels();
             LearnedClassifier learned = svm ? new SvmClassifier(models.Svm) : new BlstmClassifier(models.Blstm);
             learned.Gate = null;
             var fooled = new FooledByTheBend(learned);
@@ -382,7 +382,7 @@ namespace HeadGait.Tests
             // tilt's half-second means pass the start limit only at the bottom, after the walk began; the walk, not half a
             // second old, is withdrawn then instead of lasting as long as the model's mistake (1.2 s). The rule for walks from
             // a still head, which refuses this walk outright (PhaseFilterSettings.StillStartMaxBend), is off here.
-            var models = GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+            var models = TestData.ShippedModels();
             var filter = svm ? SvmClassifier.DefaultFilter() : new PhaseFilterSettings();
             filter.StillStartMaxBend = 0;
             LearnedClassifier learned = svm ? new SvmClassifier(models.Svm, filter) : new BlstmClassifier(models.Blstm, filter);

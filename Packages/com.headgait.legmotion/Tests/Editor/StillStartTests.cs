@@ -46,7 +46,7 @@ namespace HeadGait.Tests
             return new Recording("bumps then a bend", rows);
         }
 
-        static GaitModels Models => GaitModels.Load(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found"));
+        static GaitModels Models => TestData.ShippedModels();
 
         /// <summary>THR's default settings with a walking gate that passes everything, its clock changed by <paramref name="change"/>.</summary>
         static IGaitClassifier OpenGateThr(Action<StepClockSettings> change)

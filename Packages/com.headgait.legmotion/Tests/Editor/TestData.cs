@@ -28,9 +28,15 @@ namespace HeadGait.Tests
 
         public static Recording Eval(string name) => Load(Path.Combine(Folder, "eval", name + ".csv"));
 
+        /// <summary>The package's Models/ folder; the test fails when none is found above the test directory.</summary>
+        public static string ModelsFolder
+            => SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory) ?? throw new AssertionException("package Models/ folder not found");
+
+        /// <summary>The package's shipped models, read afresh so a test may change them.</summary>
+        public static GaitModels ShippedModels() => GaitModels.Load(ModelsFolder);
+
         /// <summary>The package's committed THR (trained on people), read afresh so a test may change it.</summary>
-        public static ThresholdSettings CommittedThreshold
-            => ThresholdSettings.Load(Path.Combine(SamplePaths.FindModelsFolder(TestContext.CurrentContext.TestDirectory), GaitModels.ThresholdFile));
+        public static ThresholdSettings CommittedThreshold => ThresholdSettings.Load(Path.Combine(ModelsFolder, GaitModels.ThresholdFile));
 
         public static Recording Load(string path)
         {
