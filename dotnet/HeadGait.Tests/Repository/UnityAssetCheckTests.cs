@@ -167,6 +167,25 @@ namespace HeadGait.Tests
             Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(shader), Is.True);
         }
 
+        /// <summary>
+        /// The primitives' shadow caster applies URP's bias under URP (its depth and normal bias from _ShadowBias along
+        /// _LightDirection, or toward _LightPosition for spot and point lights, and the near-plane clamp, as URP's
+        /// ShadowCasterPass.hlsl does) and keeps UnityCG's macros, the built-in pipeline's bias, for the built-in pipeline.
+        /// </summary>
+        [Test]
+        public void ThePrimitiveShadowCasterAppliesEachPipelinesBias()
+        {
+            string shader = PrimitiveMaterials.ShaderSource;
+            Assert.That(ShaderPasses.MissingUrpShadowBias(shader), Is.Empty, "URP's shadow bias");
+            foreach (var pipeline in new[] { ShaderPasses.BuiltIn, ShaderPasses.Universal })
+            {
+                string caster = ShaderPasses.PassPrograms(shader, "ShadowCaster", pipeline).Single();
+                Assert.That(caster, Does.Contain("#pragma multi_compile_shadowcaster").And.Contain("TRANSFER_SHADOW_CASTER_NORMALOFFSET(o)")
+                    .And.Contain("SHADOW_CASTER_FRAGMENT(i)"), pipeline + ": UnityCG's shadow caster (the built-in bias)");
+                Assert.That(caster, Does.Not.Contain("com.unity.render-pipelines"), pipeline + ": no URP include");
+            }
+        }
+
         [Test]
         public void TheCommittedPrimitiveShaderIsTheGeneratedOne()
         {
