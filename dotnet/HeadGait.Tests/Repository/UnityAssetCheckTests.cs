@@ -184,6 +184,11 @@ namespace HeadGait.Tests
                     .And.Contain("SHADOW_CASTER_FRAGMENT(i)"), pipeline + ": UnityCG's shadow caster (the built-in bias)");
                 Assert.That(caster, Does.Not.Contain("com.unity.render-pipelines"), pipeline + ": no URP include");
             }
+            // URP's spot and point light slices set _ShadowBias and _LightPosition but not _LightDirection
+            // (AdditionalLightsShadowCasterPass), which stays zero where no main light shadow was drawn: under their keyword,
+            // which only URP turns on, URP's bias applies whatever _LightDirection holds.
+            string urpCaster = ShaderPasses.PassPrograms(shader, "ShadowCaster", ShaderPasses.Universal).Single();
+            Assert.That(urpCaster, Does.Match(@"bool UrpShadowPass\(\)\s*\{\s*#if defined\(_CASTING_PUNCTUAL_LIGHT_SHADOW\)\s*return true;"));
         }
 
         [Test]

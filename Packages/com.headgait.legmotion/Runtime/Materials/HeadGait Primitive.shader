@@ -5,9 +5,11 @@
 // own bias. Built-in: UnityCG's macros (unity_LightShadowBias, _WorldSpaceLightPos0). URP: its caster-side bias as URP's
 // ShadowCasterPass.hlsl applies it, written out here without URP's include files: the globals URP sets before every
 // shadow slice (_ShadowBias: x depth, y normal bias; _LightDirection; _LightPosition for spot and point lights, under
-// URP's _CASTING_PUNCTUAL_LIGHT_SHADOW keyword) and the clamp to the shadow near plane. Only URP sets _LightDirection (to a
-// unit vector), so it picks the path: zero under built-in, which keeps UnityCG's position exactly; under URP the position
-// is URP's alone, so no built-in bias the engine may leave set is added to it.
+// URP's _CASTING_PUNCTUAL_LIGHT_SHADOW keyword) and the clamp to the shadow near plane. URP's path is taken only where
+// URP alone can have put the shader: in the variant with that keyword (URP's spot and point light slices, which set
+// _ShadowBias and _LightPosition but, in recent URP, not _LightDirection), and otherwise when _LightDirection is set (to a
+// unit vector; URP sets it before every main light cascade). Under built-in both are off and zero, which keeps UnityCG's
+// position exactly; under URP the position is URP's alone, so no built-in bias the engine may leave set is added to it.
 // DepthOnly, DepthNormals: URP's depth prepass. With depth priming URP draws opaques with ZTest Equal against that
 // prepass, so without them the primitives would not be drawn at all; they also put the primitives in URP's depth and
 // normals textures (SSAO, depth of field). They run the colour pass's vertex function (CGINCLUDE), so the depths are
@@ -99,10 +101,15 @@ Shader "HeadGait/Primitive"
                 UNITY_VERTEX_OUTPUT_STEREO
             };
 
-            // Only URP sets _LightDirection, to a unit vector, before every shadow slice it renders.
+            // Only URP turns the keyword on (its spot and point light slices) and sets _LightDirection (to a unit vector,
+            // before every main light cascade; its spot and point light slices may leave it unset).
             bool UrpShadowPass()
             {
+            #if defined(_CASTING_PUNCTUAL_LIGHT_SHADOW)
+                return true;
+            #else
                 return dot(_LightDirection, _LightDirection) > 0.5;
+            #endif
             }
 
             // URP's caster-side bias: the vertex moves away from the light by the depth bias and inward along its normal by
