@@ -582,6 +582,68 @@ namespace HeadGait.Tests
         public static bool VisibleUnderUrpDepthPriming(string shader) =>
             Draws(shader, Universal) && InUrpDepthPrepass(shader, false) && InUrpDepthPrepass(shader, true);
 
+        /// <summary>
+        /// The program text of every Pass with the given LightMode in the SubShaders the pipeline may use: the pass's own
+        /// CGPROGRAM/HLSLPROGRAM bodies after its SubShader's CGINCLUDE/HLSLINCLUDE bodies, comments removed. Included
+        /// files are not read.
+        /// </summary>
+        public static IReadOnlyList<string> PassPrograms(string shader, string lightMode, string pipeline)
+        {
+            string pipelineTag = Pipelines[pipeline].tag;
+            var programs = new List<string>();
+            foreach (string sub in Blocks(StripComments(shader), "SubShader"))
+            {
+                string subTag = Tag(TagsBefore(ShaderLab(sub), "Pass"), "RenderPipeline");
+                if (!string.IsNullOrEmpty(subTag) && subTag != pipelineTag) continue;
+                string shared = string.Concat(Regex.Matches(sub, @"\b(?:CGINCLUDE|HLSLINCLUDE)\b(.*?)\b(?:ENDCG|ENDHLSL)\b", RegexOptions.Singleline).Select(m => m.Groups[1].Value + "\n"));
+                foreach (string pass in Blocks(sub, "Pass"))
+                {
+                    string mode = Tag(TagsBefore(ShaderLab(pass), null), "LightMode") ?? (pipelineTag == null ? "Always" : "SRPDefaultUnlit");
+                    if (mode != lightMode) continue;
+                    programs.Add(shared + string.Concat(Regex.Matches(pass, @"\b(?:CGPROGRAM|HLSLPROGRAM)\b(.*?)\b(?:ENDCG|ENDHLSL)\b", RegexOptions.Singleline).Select(m => m.Groups[1].Value + "\n")));
+                }
+            }
+            return programs;
+        }
+
+        /// <summary>
+        /// What the shader's URP shadow caster lacks of the bias URP applies on the caster side (URP 17's
+        /// Shaders/ShadowCasterPass.hlsl, GetShadowPositionHClip, with ApplyShadowBias from ShaderLibrary/Shadows.hlsl): the
+        /// globals ShadowUtils.SetupShadowCasterConstantBuffer sets before each shadow slice, each declared and read
+        /// (_ShadowBias.x the depth bias and .y the normal bias, _LightDirection the directional light's direction, and
+        /// _LightPosition under the _CASTING_PUNCTUAL_LIGHT_SHADOW keyword its shadow passes switch, for spot and point
+        /// lights); and the clamp of clip-space z to the near plane (min with UNITY_NEAR_CLIP_VALUE under UNITY_REVERSED_Z,
+        /// max otherwise), which keeps casters between the light and the shadow near plane in the map. A pass that includes
+        /// URP's own ShadowCasterPass.hlsl has them all. Empty when every ShadowCaster pass URP may draw has them all; a
+        /// shader with no such pass lacks the pass itself. Reads the text only (<see cref="PassPrograms"/>).
+        /// </summary>
+        public static IReadOnlyList<string> MissingUrpShadowBias(string shader)
+        {
+            var programs = PassPrograms(shader, "ShadowCaster", Universal);
+            if (programs.Count == 0) return new[] { "no ShadowCaster pass URP draws" };
+            var missing = new List<string>();
+            foreach (string p in programs)
+            {
+                if (Regex.IsMatch(p, @"#\s*include\s+""[^""]*com\.unity\.render-pipelines\.universal/Shaders/ShadowCasterPass\.hlsl""")) continue;
+                void Need(bool present, string what) { if (!present && !missing.Contains(what)) missing.Add(what); }
+                bool Declared(string name, string types) => Regex.IsMatch(p, @"\b(?:" + types + @")\s+" + name + @"\s*;");
+                bool ReadAfterDeclaring(string name) => Regex.Matches(p, @"\b" + name + @"\b").Count >= 2;
+                Need(Declared("_ShadowBias", "float4|half4"), "_ShadowBias is not declared");
+                Need(Regex.IsMatch(p, @"\b_ShadowBias\s*\.\s*x"), "_ShadowBias.x (URP's depth bias) is not read");
+                Need(Regex.IsMatch(p, @"\b_ShadowBias\s*\.\s*y"), "_ShadowBias.y (URP's normal bias) is not read");
+                Need(Declared("_LightDirection", "float3|float4|half3|half4") && ReadAfterDeclaring("_LightDirection"), "_LightDirection is not declared and read");
+                Need(Regex.IsMatch(p, @"#\s*pragma\s+(?:multi_compile|shader_feature)\w*\s[^\n]*\b_CASTING_PUNCTUAL_LIGHT_SHADOW\b"), "no _CASTING_PUNCTUAL_LIGHT_SHADOW keyword");
+                Need(Regex.IsMatch(p, @"#\s*(?:if|ifdef|elif)\b[^\n]*\b_CASTING_PUNCTUAL_LIGHT_SHADOW\b") &&
+                     Declared("_LightPosition", "float3|float4|half3|half4") && ReadAfterDeclaring("_LightPosition"),
+                     "_LightPosition is not read under _CASTING_PUNCTUAL_LIGHT_SHADOW");
+                Need(Regex.IsMatch(p, @"#\s*if[^\n]*\bUNITY_REVERSED_Z\b") &&
+                     Regex.IsMatch(p, @"\bmin\s*\(\s*[\w.]+\.z\s*,\s*UNITY_NEAR_CLIP_VALUE\s*\)") &&
+                     Regex.IsMatch(p, @"\bmax\s*\(\s*[\w.]+\.z\s*,\s*UNITY_NEAR_CLIP_VALUE\s*\)"),
+                     "clip-space z is not clamped to the near plane (UNITY_NEAR_CLIP_VALUE, min under UNITY_REVERSED_Z, max otherwise)");
+            }
+            return missing;
+        }
+
         /// <summary>The shader named by a top-level Fallback, or null for none or `Fallback Off`.</summary>
         public static string Fallback(string shader)
         {
@@ -615,10 +677,12 @@ namespace HeadGait.Tests
         /// </summary>
         static string ShaderLab(string shader)
         {
-            string text = Regex.Replace(shader, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
+            string text = StripComments(shader);
             return Regex.Replace(text, @"\b(CGPROGRAM|HLSLPROGRAM|CGINCLUDE|HLSLINCLUDE)\b.*?\b(ENDCG|ENDHLSL)\b",
                 m => Regex.IsMatch(m.Value, @"#pragma\s+surface\b") ? "Pass { Tags { \"LightMode\" = \"ForwardBase\" } }" : "", RegexOptions.Singleline);
         }
+
+        static string StripComments(string shader) => Regex.Replace(shader, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
 
         /// <summary>The bodies of every `keyword { ... }` block at any depth.</summary>
         static IEnumerable<string> Blocks(string text, string keyword)

@@ -167,6 +167,30 @@ namespace HeadGait.Tests
             Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(shader), Is.True);
         }
 
+        /// <summary>
+        /// The primitives' shadow caster applies URP's bias under URP (its depth and normal bias from _ShadowBias along
+        /// _LightDirection, or toward _LightPosition for spot and point lights, and the near-plane clamp, as URP's
+        /// ShadowCasterPass.hlsl does) and keeps UnityCG's macros, the built-in pipeline's bias, for the built-in pipeline.
+        /// </summary>
+        [Test]
+        public void ThePrimitiveShadowCasterAppliesEachPipelinesBias()
+        {
+            string shader = PrimitiveMaterials.ShaderSource;
+            Assert.That(ShaderPasses.MissingUrpShadowBias(shader), Is.Empty, "URP's shadow bias");
+            foreach (var pipeline in new[] { ShaderPasses.BuiltIn, ShaderPasses.Universal })
+            {
+                string caster = ShaderPasses.PassPrograms(shader, "ShadowCaster", pipeline).Single();
+                Assert.That(caster, Does.Contain("#pragma multi_compile_shadowcaster").And.Contain("TRANSFER_SHADOW_CASTER_NORMALOFFSET(o)")
+                    .And.Contain("SHADOW_CASTER_FRAGMENT(i)"), pipeline + ": UnityCG's shadow caster (the built-in bias)");
+                Assert.That(caster, Does.Not.Contain("com.unity.render-pipelines"), pipeline + ": no URP include");
+            }
+            // URP's spot and point light slices set _ShadowBias and _LightPosition but not _LightDirection
+            // (AdditionalLightsShadowCasterPass), which stays zero where no main light shadow was drawn: under their keyword,
+            // which only URP turns on, URP's bias applies whatever _LightDirection holds.
+            string urpCaster = ShaderPasses.PassPrograms(shader, "ShadowCaster", ShaderPasses.Universal).Single();
+            Assert.That(urpCaster, Does.Match(@"bool UrpShadowPass\(\)\s*\{\s*#if defined\(_CASTING_PUNCTUAL_LIGHT_SHADOW\)\s*return true;"));
+        }
+
         [Test]
         public void TheCommittedPrimitiveShaderIsTheGeneratedOne()
         {
@@ -226,6 +250,59 @@ namespace HeadGait.Tests
             Assert.That(ShaderPasses.Draws(fallbackOff, ShaderPasses.Universal), Is.True);
             Assert.That(ShaderPasses.VisibleUnderUrpDepthPriming(fallbackOff), Is.False);
         }
+
+        /// <summary>The URP shadow-bias model on small shaders, so that it cannot pass the primitive shader trivially.</summary>
+        [Test]
+        public void UrpsShadowBiasIsReadFromTheShadowCasterPassProgram()
+        {
+            // UnityCG's macros alone (the built-in pipeline's bias): every URP term is missing.
+            string unityCg = ShadowCasterShader("#pragma multi_compile_shadowcaster\n#include \"UnityCG.cginc\"\n" +
+                "struct v2f { V2F_SHADOW_CASTER; };\nv2f vert(appdata_base v) { v2f o; TRANSFER_SHADOW_CASTER_NORMALOFFSET(o) return o; }\n" +
+                "// URP's _ShadowBias.x, _ShadowBias.y and _LightDirection are not applied (a comment does not count)\n" +
+                "float4 frag(v2f i) : SV_Target { SHADOW_CASTER_FRAGMENT(i) }\n");
+            var missing = ShaderPasses.MissingUrpShadowBias(unityCg);
+            Assert.That(missing, Has.Some.Contains("_ShadowBias.x").And.Some.Contains("_ShadowBias.y").And.Some.Contains("_LightDirection")
+                .And.Some.Contains("_CASTING_PUNCTUAL_LIGHT_SHADOW keyword").And.Some.Contains("near plane"));
+
+            // All of URP's terms: nothing missing; each one dropped is named.
+            string urp = ShadowCasterShader(UrpBiasProgram);
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp), Is.Empty);
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("min(p.z, UNITY_NEAR_CLIP_VALUE)", "p.z")), Is.EqualTo(new[]
+                { "clip-space z is not clamped to the near plane (UNITY_NEAR_CLIP_VALUE, min under UNITY_REVERSED_Z, max otherwise)" }));
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("_ShadowBias.y", "0")), Is.EqualTo(new[] { "_ShadowBias.y (URP's normal bias) is not read" }));
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("#pragma multi_compile_vertex _ _CASTING_PUNCTUAL_LIGHT_SHADOW\n", "")),
+                Is.EqualTo(new[] { "no _CASTING_PUNCTUAL_LIGHT_SHADOW keyword" }));
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("normalize(_LightPosition - w)", "_LightDirection")),
+                Is.EqualTo(new[] { "_LightPosition is not read under _CASTING_PUNCTUAL_LIGHT_SHADOW" }));
+            // Commented out, the terms are gone.
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("w += l * _ShadowBias.x", "// w += l * _ShadowBias.x")), Has.Some.Contains("_ShadowBias.x"));
+
+            // URP's own ShadowCasterPass.hlsl has them all; a URP-tagged SubShader counts for URP.
+            string urpInclude = ShadowCasterShader("#include \"Packages/com.unity.render-pipelines.universal/Shaders/ShadowCasterPass.hlsl\"\n")
+                .Replace("SubShader {", "SubShader { Tags { \"RenderPipeline\" = \"UniversalPipeline\" }");
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urpInclude), Is.Empty);
+
+            // The terms in a SubShader only the built-in pipeline uses, or in another pass, do not count; nor does no caster.
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("SubShader {", "SubShader { Tags { \"RenderPipeline\" = \"HDRenderPipeline\" }")),
+                Is.EqualTo(new[] { "no ShadowCaster pass URP draws" }));
+            Assert.That(ShaderPasses.MissingUrpShadowBias(urp.Replace("\"ShadowCaster\"", "\"DepthOnly\"")), Is.EqualTo(new[] { "no ShadowCaster pass URP draws" }));
+            Assert.That(ShaderPasses.MissingUrpShadowBias(UrpOnlyShader), Is.EqualTo(new[] { "no ShadowCaster pass URP draws" }));
+            // The SubShader's CGINCLUDE is part of every pass's program.
+            string shared = "Shader \"Test/Shared\" { SubShader {\nCGINCLUDE\n" + UrpBiasProgram + "ENDCG\n" +
+                            "Pass { Tags { \"LightMode\" = \"ShadowCaster\" }\nCGPROGRAM\n#pragma vertex vert\nENDCG\n} } }";
+            Assert.That(ShaderPasses.MissingUrpShadowBias(shared), Is.Empty);
+            Assert.That(ShaderPasses.PassPrograms(shared, "ShadowCaster", ShaderPasses.BuiltIn).Single(), Does.Contain("_ShadowBias.x").And.Contain("#pragma vertex vert"));
+        }
+
+        static string ShadowCasterShader(string program) =>
+            "Shader \"Test/Caster\" { SubShader {\n Pass { Tags { \"LightMode\" = \"ShadowCaster\" }\nCGPROGRAM\n" + program + "ENDCG\n}\n} Fallback Off }";
+
+        const string UrpBiasProgram =
+            "#pragma multi_compile_vertex _ _CASTING_PUNCTUAL_LIGHT_SHADOW\nfloat4 _ShadowBias; float3 _LightDirection; float3 _LightPosition;\n" +
+            "float4 vert(float4 v : POSITION, float3 n : NORMAL) : SV_POSITION {\n float3 w = mul(unity_ObjectToWorld, v).xyz;\n" +
+            "#if defined(_CASTING_PUNCTUAL_LIGHT_SHADOW)\n float3 l = normalize(_LightPosition - w);\n#else\n float3 l = _LightDirection;\n#endif\n" +
+            " w += l * _ShadowBias.x + n * (1 - saturate(dot(l, n))) * _ShadowBias.y;\n float4 p = mul(UNITY_MATRIX_VP, float4(w, 1));\n" +
+            "#if defined(UNITY_REVERSED_Z)\n p.z = min(p.z, UNITY_NEAR_CLIP_VALUE);\n#else\n p.z = max(p.z, UNITY_NEAR_CLIP_VALUE);\n#endif\n return p;\n}\n";
 
         [Test]
         public void StrippedDocumentsAndTagsAreSplitBeforeParsing()
