@@ -5,6 +5,7 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Threading.Tasks;
+using HeadGait.Synthetic;
 using HeadGait.Training;
 
 namespace HeadGait.Cli
@@ -25,11 +26,12 @@ namespace HeadGait.Cli
             var cv = new Option<string>("--cv") { Description = "person: leave one person out: each person's recordings are judged by walking gates trained on the --train recordings and the other people's recordings in --data (as `train --real` trains them); the rest of each model as shipped" };
             var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
             var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S[,AFTER_SHOWN_S]]]] (defaults 0.15 s, 0, 0: any time, 0: after any walk); replaces the shipped setting (THR 0.75,0.15,1,3; COR off)" };
+            var noPutOn = new Option<bool>("--no-put-on") { Description = "do not add the generated put-on streams (PutOnGlassesGenerator over each standing and sitting recording, reported as putting on glasses) that are added when --data holds no putting_on_glasses recordings of its own" };
             var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, the start of bouts met standing and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
-                data, classifier, models, perPerson, cv, train, firstStep,
+                data, classifier, models, perPerson, cv, train, firstStep, noPutOn,
             };
-            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train), ParseFirstStep(parse.GetValue(firstStep))));
+            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train), ParseFirstStep(parse.GetValue(firstStep)), !parse.GetValue(noPutOn)));
             return command;
         }
 
@@ -68,7 +70,7 @@ namespace HeadGait.Cli
             }
         }
 
-        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep)
+        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep, bool putOn)
         {
             bool byPerson = cv switch
             {
@@ -83,10 +85,18 @@ namespace HeadGait.Cli
             string folder = modelFolder ?? SamplePaths.FindModelsFolder() ?? throw new UsageException("no --models and no package Models/ folder found");
             var models = Classifiers.Load(folder);
             var names = Classifiers.Parse(classifierList);
-            var references = new RhythmReference[recordings.Count];
-            Parallel.For(0, recordings.Count, i => references[i] = RhythmReference.Of(recordings[i]));
             Console.WriteLine($"HeadGait realworld: {recordings.Count} recordings of {recordings.Select(RealActivity.PersonOf).Distinct().Count()} people from {string.Join(", ", data)}, models from {folder}");
             var gates = byPerson ? PersonGates(recordings, train) : null;
+            if (putOn && !recordings.Any(r => RealActivity.Of(r) == RealActivity.PuttingOnGlasses))
+            {
+                // The judges' putting on glasses, which these recordings lack: generated over the wearers' own still
+                // recordings, after the gates were trained (they never learn from it).
+                var worn = recordings.Where(r => RealActivity.Of(r) is RealActivity.Standing or RealActivity.SittingHeadMovement).ToList();
+                recordings.AddRange(worn.Select(r => PutOnGlassesGenerator.From(r, DeterministicRandom.SeedFrom(r.Name))));
+                if (worn.Count > 0) Console.WriteLine($"Putting on glasses: generated over the {worn.Count} standing and sitting recordings (PutOnGlassesGenerator; --no-put-on leaves them out).");
+            }
+            var references = new RhythmReference[recordings.Count];
+            Parallel.For(0, recordings.Count, i => references[i] = RhythmReference.Of(recordings[i]));
             if (firstStep != null) Console.WriteLine($"THR and COR start on a first step the gate refuses by less than {firstStep.Margin} log-odds (confirmed within {firstStep.ConfirmWithin} s{(firstStep.KeepMargin > 0 ? $", withdrawn at once at -{firstStep.KeepMargin}" : "")}{(firstStep.ResumeWithin > 0 ? $", only within {firstStep.ResumeWithin} s of a walk" : "")}).");
             if (byPerson) Console.WriteLine($"Leave one person out: each person judged by walking gates trained on {string.Join(", ", train)} and the other {gates.Count - 1} people.");
             Console.WriteLine();
@@ -172,7 +182,7 @@ namespace HeadGait.Cli
                 ($"  started within {RealWorldSummary.StandingStarts.Within:0.0} s", x => $"{Pct(x.WalkingStarts.ShareWithin)} / {Pct(x.TugStarts.ShareWithin)}"),
                 ("  classifier's own, walking files: n, median / 90th", x => $"{x.ClassifierStarts.Count}, {Num(x.ClassifierStarts.Median, "F2")}/{Num(x.ClassifierStarts.Ninetieth, "F2")}"),
             };
-            foreach (var activity in new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup })
+            foreach (var activity in RealActivity.StillActivities)
                 if (s.Any(x => x.Still.ContainsKey(activity)))
                     rows.Add(($"{activity.Replace('_', ' ')} shown as walking: avatar / classifier", x => x.Still.TryGetValue(activity, out var v) ? $"{Pct(v.Avatar)} / {Pct(v.Classifier)}" : "-"));
             rows.Add(($"TUG time shown walking (signal: {Pct(first.TugReference)}); of its walking", x => $"{Pct(x.TugAvatar)}; {Pct(x.TugAvatarOfReference)}"));

@@ -11,12 +11,17 @@ namespace HeadGait
         public const string SittingHeadMovement = "sitting_head_movement";
         public const string StandingPickup = "standing_pickup";
         public const string TimedUpAndGo = "tug";
+        /// <summary>Glasses (or a headset) picked up and put on, taken off and put down: the other judges' activity, generated here (<see cref="Synthetic.PutOnGlassesGenerator"/>).</summary>
+        public const string PuttingOnGlasses = "putting_on_glasses";
+
+        /// <summary>Activities in which nobody walks, in the order reports list them: any walking shown there is wrong.</summary>
+        public static readonly IReadOnlyList<string> StillActivities = new[] { Standing, SittingHeadMovement, StandingPickup, PuttingOnGlasses };
 
         /// <summary>The recording's activity: its <c>activity</c> header, else the one its name ends with; "" when neither says.</summary>
         public static string Of(Recording recording)
         {
             if (recording.Metadata.TryGetValue("activity", out var a) && a.Trim().Length > 0) return a.Trim().ToLowerInvariant();
-            foreach (var known in new[] { SittingHeadMovement, StandingPickup, Walking, Standing, TimedUpAndGo })
+            foreach (var known in new[] { SittingHeadMovement, StandingPickup, PuttingOnGlasses, Walking, Standing, TimedUpAndGo })
                 if (recording.Name.EndsWith(known, StringComparison.OrdinalIgnoreCase)) return known;
             return "";
         }
@@ -29,8 +34,7 @@ namespace HeadGait
             return cut > 0 ? recording.Name.Substring(0, cut) : recording.Name;
         }
 
-        /// <summary>Activities in which nobody walks: any walking shown there is wrong.</summary>
-        public static bool IsStill(string activity) => activity == Standing || activity == SittingHeadMovement || activity == StandingPickup;
+        public static bool IsStill(string activity) => ((IList<string>)StillActivities).Contains(activity);
     }
 
     /// <summary>
