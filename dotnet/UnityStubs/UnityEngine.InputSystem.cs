@@ -137,6 +137,12 @@ namespace UnityEngine.InputSystem.Controls
 
     // Controls/IntegerControl.cs (TrackedDevice.trackingState carries UnityEngine.XR.InputTrackingState bits)
     public class IntegerControl : InputControl<int> { }
+
+    // Controls/AxisControl.cs
+    public class AxisControl : InputControl<float> { }
+
+    // Controls/ButtonControl.cs (OculusHMD's userPresence, OpenXRHmd's UserPresence: XR bool features become buttons)
+    public class ButtonControl : AxisControl { }
 }
 
 namespace UnityEngine.InputSystem.LowLevel

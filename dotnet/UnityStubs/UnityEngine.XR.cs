@@ -32,6 +32,7 @@ namespace UnityEngine.XR
         public static InputFeatureUsage<Vector3> devicePosition = new InputFeatureUsage<Vector3>("DevicePosition");
         public static InputFeatureUsage<Quaternion> deviceRotation = new InputFeatureUsage<Quaternion>("DeviceRotation");
         public static InputFeatureUsage<Vector3> deviceAcceleration = new InputFeatureUsage<Vector3>("DeviceAcceleration");
+        public static InputFeatureUsage<bool> userPresence = new InputFeatureUsage<bool>("UserPresence");
     }
 
     public struct InputDevice
@@ -40,6 +41,7 @@ namespace UnityEngine.XR
         public bool TryGetFeatureValue(InputFeatureUsage<Vector3> usage, out Vector3 value) { value = default; return false; }
         public bool TryGetFeatureValue(InputFeatureUsage<Quaternion> usage, out Quaternion value) { value = default; return false; }
         public bool TryGetFeatureValue(InputFeatureUsage<InputTrackingState> usage, out InputTrackingState value) { value = default; return false; }
+        public bool TryGetFeatureValue(InputFeatureUsage<bool> usage, out bool value) { value = default; return false; }
     }
 
     public class InputDevices

@@ -169,6 +169,7 @@ namespace HeadGait.Tests
             odd.childControls.Add(Control<Vector3Control>("centerEyePosition"));
             odd.childControls.Add(Control<QuaternionControl>("centerEyeRotation"));
             odd.childControls.Add(Control<Vector3Control>("trackingState"));
+            odd.childControls.Add(Control<Vector3Control>("userPresence"));
             InputSystem.addedDevices.Add(odd);
             try
             {

@@ -87,6 +87,37 @@ namespace HeadGait.Tests
             Assert.That(stream.Gate.Switches, Is.EqualTo(3));
         }
 
+        /// <summary>
+        /// The headset's proximity sensor says nobody wears it (XR userPresence false: being put on, taken off, lying on a
+        /// table): no sample comes out, whatever it reports, so the pipeline meets a hole and the avatar stands. Worn again,
+        /// samples come at once, from reported acceleration as before (the gate kept following it); a headset without the
+        /// sensor (null) is read as worn.
+        /// </summary>
+        [Test]
+        public void NoSampleComesOutWhileNobodyWearsTheHeadset()
+        {
+            var stream = new XrHeadStream();
+            int Samples(double from, int frames, bool? present, Vector3 acceleration)
+            {
+                int n = 0;
+                for (int i = 0; i < frames; i++)
+                {
+                    var r = new HeadReport
+                    {
+                        Time = from + i / 90.0, HasPose = true, Position = new Vector3(0.1f, 1.7f + 0.2f * i / frames, -0.3f), Rotation = FacingX,
+                        HasAcceleration = true, Acceleration = acceleration, TrackingState = PositionRotationAcceleration, UserPresent = present,
+                    };
+                    if (stream.Push(r, out _)) n++;
+                }
+                return n;
+            }
+            var lift = new Vector3(0.4f, 2f, -0.3f);
+            Assert.That(Samples(0, 90, null, lift), Is.GreaterThan(80), "no proximity sensor: worn (the pose estimate fills first)");
+            Assert.That(Samples(1, 90, false, lift), Is.EqualTo(0), "taken off and put on again");
+            Assert.That(stream.UsingPose, Is.False, "the gate followed the reports while nobody wore it");
+            Assert.That(Samples(2, 90, true, lift), Is.EqualTo(90), "worn again");
+        }
+
         [Test]
         public void AccelerationTheTrackingStateDoesNotFlagIsIgnored()
         {

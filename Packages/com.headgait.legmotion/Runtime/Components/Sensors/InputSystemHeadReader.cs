@@ -28,6 +28,8 @@ namespace HeadGait.Unity
         Vector3Control headPosition, headAcceleration;
         QuaternionControl headRotation;
         IntegerControl headTracking;
+        ButtonControl headPresence;
+        bool? lastPresence; // a delta event may leave the presence out: the last one read holds
         Accelerometer accelerometer;
         LinearAccelerationSensor linear;
         GravitySensor gravity;
@@ -70,6 +72,9 @@ namespace HeadGait.Unity
                     headRotation = rotation;
                     headAcceleration = Child<Vector3Control>(device, "centerEyeAcceleration") ?? Child<Vector3Control>(device, "deviceAcceleration");
                     headTracking = Child<IntegerControl>(device, "trackingState");
+                    // OculusHMD's userPresence, OpenXRHmd's UserPresence (control paths are case-insensitive).
+                    headPresence = Child<ButtonControl>(device, "userPresence");
+                    lastPresence = null;
                 }
             }
             if (!router.WantsPhone) return;
@@ -98,7 +103,12 @@ namespace HeadGait.Unity
 
         void Unbind(InputDevice device)
         {
-            if (device == head) head = null;
+            if (device == head)
+            {
+                head = null;
+                headPresence = null;
+                lastPresence = null;
+            }
             if (device == accelerometer) accelerometer = null;
             if (device == linear) linear = null;
             if (device == gravity) gravity = null;
@@ -129,6 +139,10 @@ namespace HeadGait.Unity
                     report.HasAcceleration = headAcceleration.ReadValueFromEvent(eventPtr, out report.Acceleration);
                 if (headTracking != null && headTracking.ReadValueFromEvent(eventPtr, out int tracking))
                     report.TrackingState = tracking;
+                // A button reads 1 pressed, 0 released; 0.5 is the Input System's default press point.
+                if (headPresence != null && headPresence.ReadValueFromEvent(eventPtr, out float presence))
+                    lastPresence = presence >= 0.5f;
+                report.UserPresent = lastPresence;
                 router.OnHeadEvent(report);
                 return;
             }

@@ -32,6 +32,7 @@ namespace HeadGait.Unity
                              & head.TryGetFeatureValue(CommonUsages.deviceRotation, out report.Rotation);
             report.HasAcceleration = head.TryGetFeatureValue(CommonUsages.deviceAcceleration, out report.Acceleration);
             if (head.TryGetFeatureValue(CommonUsages.trackingState, out InputTrackingState tracking)) report.TrackingState = (int)tracking;
+            if (head.TryGetFeatureValue(CommonUsages.userPresence, out bool present)) report.UserPresent = present;
             router.OnHeadEvent(report);
         }
     }

@@ -15,12 +15,20 @@ namespace HeadGait.Unity
         public Vector3 Acceleration;
         /// <summary>UnityEngine.XR.InputTrackingState bits, or null when the device reports none.</summary>
         public int? TrackingState;
+        /// <summary>
+        /// Whether someone wears the headset (XR userPresence: its proximity sensor), or null when the device reports none.
+        /// False while it is being put on or taken off, or lies on a table: those motions are no walk.
+        /// </summary>
+        public bool? UserPresent;
     }
 
     /// <summary>
     /// A headset's head samples: its reported acceleration while <see cref="ReportedAccelerationGate"/> trusts it, otherwise
     /// acceleration from the tracked pose through <see cref="PoseAccelerationEstimator"/>, which is fed every pose so it is
     /// ready the moment it is needed. Every sample carries its event's time (never the time the script ran) and its lag.
+    /// While the headset says nobody wears it (<see cref="HeadReport.UserPresent"/> false) no sample comes out: the pipeline
+    /// meets a hole, the avatar stands, and a fresh window starts once it is worn again, so putting it on and taking it off
+    /// never reach the classifier (the gate and the pose estimate still follow every report, ready when it is worn).
     /// </summary>
     public sealed class XrHeadStream
     {
@@ -67,6 +75,7 @@ namespace HeadGait.Unity
             }
 
             bool trust = gate.Observe(report.Time, report.HasAcceleration, report.Acceleration, report.TrackingState);
+            if (report.UserPresent == false) return false;
             if (AllowReported && trust && report.HasAcceleration && hasRotation)
             {
                 sample = new HeadSample(report.Time, HeadAxes.SpecificForceFromLinear(report.Acceleration, rotation), 0);
