@@ -91,7 +91,7 @@ namespace HeadGait.Tests
         /// The headset's proximity sensor says nobody wears it (XR userPresence false: being put on, taken off, lying on a
         /// table): no sample comes out, whatever it reports, so the pipeline meets a hole and the avatar stands. Worn again,
         /// samples come at once, from reported acceleration as before (the gate kept following it); a headset without the
-        /// sensor (null) is read as worn.
+        /// sensor (null), or whose sensor never said worn, is read as worn.
         /// </summary>
         [Test]
         public void NoSampleComesOutWhileNobodyWearsTheHeadset()
@@ -113,9 +113,11 @@ namespace HeadGait.Tests
             }
             var lift = new Vector3(0.4f, 2f, -0.3f);
             Assert.That(Samples(0, 90, null, lift), Is.GreaterThan(80), "no proximity sensor: worn (the pose estimate fills first)");
-            Assert.That(Samples(1, 90, false, lift), Is.EqualTo(0), "taken off and put on again");
+            Assert.That(Samples(1, 45, false, lift), Is.EqualTo(45), "a sensor that never said worn (a runtime that exposes the control and never sets it): worn");
+            Assert.That(Samples(1.5, 45, true, lift), Is.EqualTo(45));
+            Assert.That(Samples(2, 90, false, lift), Is.EqualTo(0), "taken off and put on again");
             Assert.That(stream.UsingPose, Is.False, "the gate followed the reports while nobody wore it");
-            Assert.That(Samples(2, 90, true, lift), Is.EqualTo(90), "worn again");
+            Assert.That(Samples(3, 90, true, lift), Is.EqualTo(90), "worn again");
         }
 
         [Test]

@@ -26,7 +26,7 @@ namespace HeadGait.Unity
     /// A headset's head samples: its reported acceleration while <see cref="ReportedAccelerationGate"/> trusts it, otherwise
     /// acceleration from the tracked pose through <see cref="PoseAccelerationEstimator"/>, which is fed every pose so it is
     /// ready the moment it is needed. Every sample carries its event's time (never the time the script ran) and its lag.
-    /// While the headset says nobody wears it (<see cref="HeadReport.UserPresent"/> false) no sample comes out: the pipeline
+    /// While the headset says nobody wears it (<see cref="HeadReport.UserPresent"/> false, once it has said someone does) no sample comes out: the pipeline
     /// meets a hole, the avatar stands, and a fresh window starts once it is worn again, so putting it on and taking it off
     /// never reach the classifier (the gate and the pose estimate still follow every report, ready when it is worn).
     /// </summary>
@@ -40,6 +40,7 @@ namespace HeadGait.Unity
         readonly PoseAccelerationEstimator fromPose = new PoseAccelerationEstimator();
         Quaternion rotation = Quaternion.identity;
         bool hasRotation;
+        bool presenceSeen; // a runtime without the sensor may expose the control and never set it: false counts once it said worn
 
         /// <param name="allowReported">False: always derive acceleration from the pose.</param>
         public XrHeadStream(bool allowReported = true) { AllowReported = allowReported; }
@@ -75,7 +76,8 @@ namespace HeadGait.Unity
             }
 
             bool trust = gate.Observe(report.Time, report.HasAcceleration, report.Acceleration, report.TrackingState);
-            if (report.UserPresent == false) return false;
+            if (report.UserPresent == true) presenceSeen = true;
+            if (report.UserPresent == false && presenceSeen) return false;
             if (AllowReported && trust && report.HasAcceleration && hasRotation)
             {
                 sample = new HeadSample(report.Time, HeadAxes.SpecificForceFromLinear(report.Acceleration, rotation), 0);
