@@ -91,7 +91,8 @@ namespace HeadGait.Cli
             {
                 // The judges' putting on glasses, which these recordings lack: generated over the wearers' own still
                 // recordings, after the gates were trained (they never learn from it).
-                var worn = recordings.Where(r => RealActivity.Of(r) is RealActivity.Standing or RealActivity.SittingHeadMovement).ToList();
+                var worn = recordings.Where(r => RealActivity.Of(r) is RealActivity.Standing or RealActivity.SittingHeadMovement
+                                                 && r.Samples.Count >= PutOnGlassesGenerator.MinSamples).ToList();
                 recordings.AddRange(worn.Select(r => PutOnGlassesGenerator.From(r, DeterministicRandom.SeedFrom(r.Name))));
                 if (worn.Count > 0) Console.WriteLine($"Putting on glasses: generated over the {worn.Count} standing and sitting recordings (PutOnGlassesGenerator; --no-put-on leaves them out).");
             }

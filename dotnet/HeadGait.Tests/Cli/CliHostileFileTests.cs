@@ -124,6 +124,21 @@ namespace HeadGait.Tests.Cli
             Hostile("/dev/zero as a model", 0, "using COR instead", "replay", Recording("walk_straight"), "--classifier", "svm", "--models", Path.Combine(folder, "models"));
         }
 
+        /// <summary>A standing recording too short to put glasses on over (1 s) is left out of the generated put-ons, not an exception.</summary>
+        [Test]
+        public void RealWorldWithAStillRecordingTooShortForAPutOn()
+        {
+            string data = Path.Combine(folder, "still");
+            Directory.CreateDirectory(data);
+            foreach (var (name, seconds) in new[] { ("p1_e001_standing", 1.0), ("p2_e001_standing", 4.0) })
+            {
+                var lines = new System.Collections.Generic.List<string> { "# activity=standing", "timestamp_s,acc_x,acc_y,acc_z" };
+                for (int i = 0; i < seconds * 100; i++) lines.Add(string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0:F2},0,0,9.80665", i * 0.01));
+                File.WriteAllLines(Path.Combine(data, name + ".csv"), lines);
+            }
+            Hostile("a 1-s standing recording", 0, "generated over the 1 standing and sitting recordings", "realworld", "--data", data, "--classifier", "thr");
+        }
+
         [Test]
         public void AFifoAsARecording()
         {

@@ -16,6 +16,8 @@ namespace HeadGait.Synthetic
     {
         public const string Activity = RealActivity.PuttingOnGlasses;
         const double Gravity = 9.80665;
+        /// <summary>The fewest worn samples a stream is made over (2 s at 100 Hz: room for one put-on).</summary>
+        public const int MinSamples = 200;
 
         /// <summary>The worn-still recording with put-on and take-off cycles over it; the worn stretches keep its samples.</summary>
         public static Recording From(Recording worn, ulong seed) => From(worn, seed, out _);
@@ -23,7 +25,7 @@ namespace HeadGait.Synthetic
         /// <summary>The same, and when each handling ran (s; <c>PutOn</c> false for a take-off).</summary>
         public static Recording From(Recording worn, ulong seed, out List<(double Start, double End, bool PutOn)> handlings)
         {
-            if (worn.Samples.Count < 200) throw new ArgumentException($"{worn.Name}: a put-on stream needs at least 2 s of worn samples.");
+            if (worn.Samples.Count < MinSamples) throw new ArgumentException($"{worn.Name}: a put-on stream needs at least {MinSamples} worn samples, it has {worn.Samples.Count}.");
             var random = new DeterministicRandom(seed);
             var samples = worn.Samples;
             double t0 = samples[0].Imu.Time, end = samples[samples.Count - 1].Imu.Time;
