@@ -142,7 +142,6 @@ namespace HeadGait
         public LocomotionState State => state;
         public double StridePosition => s;
         public AnimatorSettings Settings => settings;
-        public int ConsecutiveWrong => wrongRun;
 
         public void Reset()
         {

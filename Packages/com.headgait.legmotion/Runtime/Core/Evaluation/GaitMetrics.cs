@@ -30,9 +30,6 @@ namespace HeadGait
         /// <summary>Share of (sample, foot) pairs whose predicted phase differs from the truth (Standing included).</summary>
         public double MisclassificationRate => Ratio(wrongLeft + wrongRight, Comparisons);
 
-        public double MisclassificationLeft => Ratio(wrongLeft, samples);
-        public double MisclassificationRight => Ratio(wrongRight, samples);
-
         /// <summary>The same, counting a prediction one phase off (cyclic neighbour) as correct.</summary>
         public double MisclassificationBeyondAdjacent => Ratio(wrongBeyondAdjacent, Comparisons);
 

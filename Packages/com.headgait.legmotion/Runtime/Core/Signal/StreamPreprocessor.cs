@@ -118,7 +118,6 @@ namespace HeadGait
         long gridIndex;       // index of the next grid sample to produce, relative to gridOrigin
         double gridOrigin;    // time of grid index 0
         long filled;          // samples in the ring since the last (re)start
-        long produced;
         double lastSeen = double.NaN; // the last finite timestamp pushed, accepted or not: how far apart the samples come
         double lastInterval;
         int holesInARow;              // samples in a row that came more than MaxGap after the one before
@@ -180,9 +179,6 @@ namespace HeadGait
         public int Rebases { get; private set; }
         public int Gaps { get; private set; }
         public int Accepted { get; private set; }
-
-        /// <summary>Resampled grid samples produced so far.</summary>
-        public long Produced => produced;
 
         public int Skipped => SkippedNotFinite + SkippedOutOfOrder + SkippedDuplicateTime + SkippedImplausible + SkippedSuspectTime + SkippedCoarseClock;
 
@@ -387,7 +383,6 @@ namespace HeadGait
             vertRing[slot] = vertical;
             filled++;
             gridIndex++;
-            produced++;
             if (filled < settings.WindowLength) return;
             // Unroll the ring oldest-first into the window (slots not yet filled after a restart are zeros).
             int start = (int)(filled % n);

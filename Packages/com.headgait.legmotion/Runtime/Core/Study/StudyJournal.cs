@@ -97,12 +97,6 @@ namespace HeadGait.Study
         /// <summary>True when the file held no complete format line (a crash at creation under an older version): treated as empty.</summary>
         bool RepairedHeader { get; set; }
 
-        /// <summary>True when the journal holds anything besides its format line.</summary>
-        public bool HasData => entries.Count > 0 || damage.Count > 0;
-
-        /// <summary>The journal's path for an id (an existing journal whose name differs only in case is found).</summary>
-        public static string PathFor(string folder, string participantId) => Resolve(folder, ParticipantIds.Canonical(participantId));
-
         /// <summary>Opens a participant's journal for writing, creating it when the id has none; holds the id's lock until disposed.</summary>
         public static StudyJournal OpenOrCreate(string folder, string participantId, JournalFileAccess files = null)
         {

@@ -165,7 +165,6 @@ namespace HeadGait
         }
 
         public override string Name => Filter == null ? "SVM-raw" : "SVM";
-        public int SupportVectors => vectors;
 
         /// <summary>Pairwise decision values of the last window, in LIBSVM's order (0 vs 1, 0 vs 2, ..., K-2 vs K-1).</summary>
         public double[] LastDecision => WindowOutputs;
