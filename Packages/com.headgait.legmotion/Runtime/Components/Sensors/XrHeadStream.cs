@@ -26,9 +26,10 @@ namespace HeadGait.Unity
     /// A headset's head samples: its reported acceleration while <see cref="ReportedAccelerationGate"/> trusts it, otherwise
     /// acceleration from the tracked pose through <see cref="PoseAccelerationEstimator"/>, which is fed every pose so it is
     /// ready the moment it is needed. Every sample carries its event's time (never the time the script ran) and its lag.
-    /// While the headset says nobody wears it (<see cref="HeadReport.UserPresent"/> false, once it has said someone does) no sample comes out: the pipeline
-    /// meets a hole, the avatar stands, and a fresh window starts once it is worn again, so putting it on and taking it off
-    /// never reach the classifier (the gate and the pose estimate still follow every report, ready when it is worn).
+    /// While the headset says nobody wears it (<see cref="HeadReport.UserPresent"/> false, once it has said someone does) no
+    /// sample comes out: the pipeline meets a hole, the avatar stands, and a fresh window starts once it is worn again, so
+    /// putting it on and taking it off never reach the classifier (the gate and the pose estimate still follow every
+    /// report, ready when it is worn).
     /// </summary>
     public sealed class XrHeadStream
     {

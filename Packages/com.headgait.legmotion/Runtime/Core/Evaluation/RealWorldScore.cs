@@ -34,6 +34,7 @@ namespace HeadGait
             return cut > 0 ? recording.Name.Substring(0, cut) : recording.Name;
         }
 
+        /// <summary>Whether <paramref name="activity"/> is one of <see cref="StillActivities"/>.</summary>
         public static bool IsStill(string activity) => ((IList<string>)StillActivities).Contains(activity);
     }
 
