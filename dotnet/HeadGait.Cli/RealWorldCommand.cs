@@ -87,6 +87,7 @@ namespace HeadGait.Cli
             var names = Classifiers.Parse(classifierList);
             Console.WriteLine($"HeadGait realworld: {recordings.Count} recordings of {recordings.Select(RealActivity.PersonOf).Distinct().Count()} people from {string.Join(", ", data)}, models from {folder}");
             var gates = byPerson ? PersonGates(recordings, train) : null;
+            bool generatedPutOns = false;
             if (putOn && !recordings.Any(r => RealActivity.Of(r) == RealActivity.PuttingOnGlasses))
             {
                 // The judges' putting on glasses, which these recordings lack: generated over the wearers' own still
@@ -94,6 +95,7 @@ namespace HeadGait.Cli
                 var worn = recordings.Where(r => RealActivity.Of(r) is RealActivity.Standing or RealActivity.SittingHeadMovement
                                                  && r.Samples.Count >= PutOnGlassesGenerator.MinSamples).ToList();
                 recordings.AddRange(worn.Select(r => PutOnGlassesGenerator.From(r, DeterministicRandom.SeedFrom(r.Name))));
+                generatedPutOns = worn.Count > 0;
                 if (worn.Count > 0) Console.WriteLine($"Putting on glasses: generated over the {worn.Count} standing and sitting recordings (PutOnGlassesGenerator; --no-put-on leaves them out).");
             }
             var references = new RhythmReference[recordings.Count];
@@ -121,7 +123,7 @@ namespace HeadGait.Cli
                 all.AddRange(scores);
                 summaries.Add(RealWorldSummary.Of(scores[0]?.Classifier ?? name, scores));
             }
-            Print(summaries);
+            Print(summaries, generatedPutOns);
             if (perPersonCsv != null) WriteCsv(perPersonCsv, all);
             return 0;
         }
@@ -163,7 +165,7 @@ namespace HeadGait.Cli
         static string Pct(double v) => double.IsNaN(v) ? "-" : (100 * v).ToString("F1", CultureInfo.InvariantCulture) + " %";
         static string Num(double v, string format) => double.IsNaN(v) ? "-" : v.ToString(format, CultureInfo.InvariantCulture);
 
-        static void Print(List<RealWorldSummary> s)
+        static void Print(List<RealWorldSummary> s, bool generatedPutOns)
         {
             var first = s[0];
             Console.WriteLine($"Walking files: {first.WalkingFiles} ({first.People} people); the signal shows regular steps in {Pct(first.ReferenceShare)} of their time, median cadence {Num(first.SignalCadence, "F0")} steps/min, {Num(first.ReferenceBouts, "F0")} bouts per file (median).");
@@ -185,7 +187,7 @@ namespace HeadGait.Cli
             };
             foreach (var activity in RealActivity.StillActivities)
                 if (s.Any(x => x.Still.ContainsKey(activity)))
-                    rows.Add(($"{activity.Replace('_', ' ')} shown as walking: avatar / classifier", x => x.Still.TryGetValue(activity, out var v) ? $"{Pct(v.Avatar)} / {Pct(v.Classifier)}" : "-"));
+                    rows.Add(($"{activity.Replace('_', ' ')}{(activity == RealActivity.PuttingOnGlasses && generatedPutOns ? " (generated)" : "")} shown as walking: avatar / classifier", x => x.Still.TryGetValue(activity, out var v) ? $"{Pct(v.Avatar)} / {Pct(v.Classifier)}" : "-"));
             rows.Add(($"TUG time shown walking (signal: {Pct(first.TugReference)}); of its walking", x => $"{Pct(x.TugAvatar)}; {Pct(x.TugAvatarOfReference)}"));
             int labelWidth = rows.Max(r => r.Label.Length) + 2;
             int cellWidth = Math.Max(18, rows.SelectMany(r => s.Select(r.Cell)).Max(c => c.Length) + 2);

@@ -124,7 +124,10 @@ namespace HeadGait.Tests.Cli
             Hostile("/dev/zero as a model", 0, "using COR instead", "replay", Recording("walk_straight"), "--classifier", "svm", "--models", Path.Combine(folder, "models"));
         }
 
-        /// <summary>A standing recording too short to put glasses on over (1 s) is left out of the generated put-ons, not an exception.</summary>
+        /// <summary>
+        /// A standing recording too short to put glasses on over (1 s) is left out of the generated put-ons, not an exception;
+        /// the other is put on over.
+        /// </summary>
         [Test]
         public void RealWorldWithAStillRecordingTooShortForAPutOn()
         {
