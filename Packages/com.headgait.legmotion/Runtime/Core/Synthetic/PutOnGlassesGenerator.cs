@@ -93,20 +93,23 @@ namespace HeadGait.Synthetic
         /// <summary>One handling of the sensor: segments each moving it by a displacement and turning it between two attitudes.</summary>
         sealed class Motion
         {
-            public double Start, End;
             public bool EndsWorn;
-            public Rotation3 From, To;
             readonly List<(double Start, double Duration, Vec3 Move, Rotation3 From, Rotation3 To)> segments = new List<(double, double, Vec3, Rotation3, Rotation3)>();
             double tremorAmplitude, tremorHz, tremorPhase;
 
+            public double Start => segments[0].Start;
+            public double End => segments[segments.Count - 1].Start + segments[segments.Count - 1].Duration;
+            /// <summary>The attitude the sensor is handled from and left at.</summary>
+            public Rotation3 From => segments[0].From;
+            public Rotation3 To => segments[segments.Count - 1].To;
+
             public static Motion PutOn(double start, DeterministicRandom random)
             {
-                var m = new Motion { Start = start, EndsWorn = true };
+                var m = new Motion { EndsWorn = true };
                 m.Tremor(random);
                 var lying = RandomAttitude(random);
-                var held = Rotation3.About(0, random.Uniform(-40, 40)) * Rotation3.About(1, random.Uniform(-50, 50)) * Rotation3.About(2, random.Uniform(-90, 90));
-                // The temple arm folded: turned about the hinge (the sensor's up axis when worn) by about 90 degrees.
-                var folded = Rotation3.About(2, random.Uniform(70, 100));
+                var held = HeldAttitude(random);
+                var folded = FoldedTemple(random);
                 double t = start;
                 t = m.Add(t, random.Uniform(0.8, 1.5), Reach(random, random.Uniform(0.3, 0.6)), lying, held * folded);
                 t = m.Add(t, random.Uniform(0.3, 0.6), Small(random, 0.05), held * folded, held);
@@ -117,29 +120,30 @@ namespace HeadGait.Synthetic
                     t += random.Uniform(0.1, 0.4);
                     t = m.Add(t, random.Uniform(0.15, 0.25), new Vec3(random.Uniform(-0.015, -0.005), 0, random.Uniform(0.0, 0.01)), Rotation3.Identity, Rotation3.Identity);
                 }
-                m.From = lying;
-                m.To = Rotation3.Identity;
-                m.End = t;
                 return m;
             }
 
             public static Motion TakeOff(double start, DeterministicRandom random)
             {
-                var m = new Motion { Start = start, EndsWorn = false };
+                var m = new Motion { EndsWorn = false };
                 m.Tremor(random);
-                var held = Rotation3.About(0, random.Uniform(-40, 40)) * Rotation3.About(1, random.Uniform(-50, 50)) * Rotation3.About(2, random.Uniform(-90, 90));
-                var folded = Rotation3.About(2, random.Uniform(70, 100));
+                var held = HeldAttitude(random);
+                var folded = FoldedTemple(random);
                 var lying = RandomAttitude(random);
                 double t = start;
                 t = m.Add(t, random.Uniform(0.4, 0.8), new Vec3(random.Uniform(0.1, 0.2), random.Uniform(-0.05, 0.05), random.Uniform(-0.08, 0.0)), Rotation3.Identity, held);
                 t = m.Add(t, random.Uniform(0.3, 0.6), Small(random, 0.05), held, held * folded);
                 var reach = Reach(random, random.Uniform(0.3, 0.6));
-                t = m.Add(t, random.Uniform(0.8, 1.5), new Vec3(-reach.X, -reach.Y, -reach.Z), held * folded, lying);
-                m.From = Rotation3.Identity;
-                m.To = lying;
-                m.End = t;
+                m.Add(t, random.Uniform(0.8, 1.5), new Vec3(-reach.X, -reach.Y, -reach.Z), held * folded, lying);
                 return m;
             }
+
+            /// <summary>Held in the hand near the face: rolled within 40 and pitched within 50 degrees of worn, turned any way.</summary>
+            static Rotation3 HeldAttitude(DeterministicRandom random) =>
+                Rotation3.About(0, random.Uniform(-40, 40)) * Rotation3.About(1, random.Uniform(-50, 50)) * Rotation3.About(2, random.Uniform(-90, 90));
+
+            /// <summary>The temple arm folded: turned about the hinge (the sensor's up axis when worn) by about 90 degrees.</summary>
+            static Rotation3 FoldedTemple(DeterministicRandom random) => Rotation3.About(2, random.Uniform(70, 100));
 
             void Tremor(DeterministicRandom random)
             {
