@@ -93,7 +93,9 @@ namespace HeadGait.Cli
             }
             Console.WriteLine();
             Console.WriteLine("Share of the rest of the walk (where the signal shows steps) shown as walking by the classifier / the avatar; still activities' time shown as walking (classifier / avatar):");
-            Console.WriteLine($"{"clf",-7} {"walking, none",18} {"walking, self",18} {"d_clf",6} " + string.Join(" ", new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup }.Select(a => $"{a + " none/self",34}")));
+            // Every still activity these recordings hold (RealActivity.StillActivities' order): each was scored above.
+            var stillActivities = RealActivity.StillActivities.Where(a => still.Keys.Any(k => k.activity == a)).ToList();
+            Console.WriteLine($"{"clf",-7} {"walking, none",18} {"walking, self",18} {"d_clf",6} " + string.Join(" ", stillActivities.Select(a => $"{a + " none/self",34}")));
             foreach (var clf in names)
             {
                 string Share(int v)
@@ -111,12 +113,12 @@ namespace HeadGait.Cli
                     return $"{One(0) + " | " + One(1),34}";
                 }
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0,-7} {1,18} {2,18} {3,6:+0.0;-0.0} {4}", clf, Share(0), Share(1), Clf(1) - Clf(0),
-                    string.Join(" ", new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup }.Select(Still))));
+                    string.Join(" ", stillActivities.Select(Still))));
             }
             Console.WriteLine();
             Console.WriteLine("People whose still activity the avatar shows as walking longer with their profile than without (time none->self):");
             foreach (var clf in names)
-                foreach (var activity in new[] { RealActivity.Standing, RealActivity.SittingHeadMovement, RealActivity.StandingPickup })
+                foreach (var activity in stillActivities)
                     if (rises.TryGetValue((clf, activity), out var r))
                         Console.WriteLine($"{clf,-7} {activity,-22} {r.risen.Count} of {r.people}" + (r.risen.Count > 0 ? ": " + string.Join(", ", r.risen) : ""));
             foreach (var n in notes) Console.WriteLine("note: " + n);
