@@ -589,17 +589,14 @@ namespace HeadGait.Tests
         /// </summary>
         public static IReadOnlyList<string> PassPrograms(string shader, string lightMode, string pipeline)
         {
-            string pipelineTag = Pipelines[pipeline].tag;
             var programs = new List<string>();
             foreach (string sub in Blocks(StripComments(shader), "SubShader"))
             {
-                string subTag = Tag(TagsBefore(ShaderLab(sub), "Pass"), "RenderPipeline");
-                if (!string.IsNullOrEmpty(subTag) && subTag != pipelineTag) continue;
+                if (!UsedBy(ShaderLab(sub), pipeline)) continue;
                 string shared = string.Concat(Regex.Matches(sub, @"\b(?:CGINCLUDE|HLSLINCLUDE)\b(.*?)\b(?:ENDCG|ENDHLSL)\b", RegexOptions.Singleline).Select(m => m.Groups[1].Value + "\n"));
                 foreach (string pass in Blocks(sub, "Pass"))
                 {
-                    string mode = Tag(TagsBefore(ShaderLab(pass), null), "LightMode") ?? (pipelineTag == null ? "Always" : "SRPDefaultUnlit");
-                    if (mode != lightMode) continue;
+                    if (LightMode(ShaderLab(pass), pipeline) != lightMode) continue;
                     programs.Add(shared + string.Concat(Regex.Matches(pass, @"\b(?:CGPROGRAM|HLSLPROGRAM)\b(.*?)\b(?:ENDCG|ENDHLSL)\b", RegexOptions.Singleline).Select(m => m.Groups[1].Value + "\n")));
                 }
             }
@@ -656,19 +653,27 @@ namespace HeadGait.Tests
         /// <summary>The LightModes of every Pass in the SubShaders the pipeline may use (a Pass without the tag as the pipeline reads it).</summary>
         static HashSet<string> LightModes(string shader, string pipeline)
         {
-            string pipelineTag = Pipelines[pipeline].tag;
             var modes = new HashSet<string>(StringComparer.Ordinal);
             foreach (string sub in Blocks(ShaderLab(shader), "SubShader"))
             {
-                string subTag = Tag(TagsBefore(sub, "Pass"), "RenderPipeline");
-                if (!string.IsNullOrEmpty(subTag) && subTag != pipelineTag) continue;
-                foreach (string pass in Blocks(sub, "Pass"))
-                    modes.Add(Tag(TagsBefore(pass, null), "LightMode") ?? (pipelineTag == null ? "Always" : "SRPDefaultUnlit"));
+                if (!UsedBy(sub, pipeline)) continue;
+                foreach (string pass in Blocks(sub, "Pass")) modes.Add(LightMode(pass, pipeline));
                 // UsePass "Shader/PASSNAME" copies that pass with its tags; Unity's shadow caster passes are named SHADOWCASTER.
                 if (Regex.IsMatch(sub, @"\bUsePass\s+""[^""]*/SHADOWCASTER""", RegexOptions.IgnoreCase)) modes.Add("ShadowCaster");
             }
             return modes;
         }
+
+        /// <summary>Whether the pipeline may use a SubShader (its ShaderLab text): no RenderPipeline tag, or the pipeline's.</summary>
+        static bool UsedBy(string subShader, string pipeline)
+        {
+            string subTag = Tag(TagsBefore(subShader, "Pass"), "RenderPipeline");
+            return string.IsNullOrEmpty(subTag) || subTag == Pipelines[pipeline].tag;
+        }
+
+        /// <summary>A Pass's LightMode as the pipeline reads it (its ShaderLab text): without the tag, built-in's "Always", an SRP's "SRPDefaultUnlit".</summary>
+        static string LightMode(string pass, string pipeline)
+            => Tag(TagsBefore(pass, null), "LightMode") ?? (Pipelines[pipeline].tag == null ? "Always" : "SRPDefaultUnlit");
 
         /// <summary>
         /// The ShaderLab text alone: comments removed, and program bodies (which may hold braces of their own) dropped. A
