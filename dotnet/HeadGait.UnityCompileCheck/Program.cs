@@ -92,7 +92,7 @@ namespace HeadGait.UnityCompileCheck
             packageDeps = Versions(packageJson, "dependencies");
             manifest[PackageName] = packageJson.GetProperty("version").GetString();
             packageMinimumUnity = packageJson.TryGetProperty("unity", out var u)
-                ? u.GetString() + "." + (packageJson.TryGetProperty("unityRelease", out var ur) ? ur.GetString() : "0f1") : null;
+                ? OldestEditor(u.GetString(), packageJson.TryGetProperty("unityRelease", out var ur) ? ur.GetString() : null) : null;
 
             foreach (var path in Directory.GetFiles(packageDir, "*.asmdef", SearchOption.AllDirectories).OrderBy(p => p, StringComparer.Ordinal))
             {
@@ -122,6 +122,11 @@ namespace HeadGait.UnityCompileCheck
             var refDir = Path.Combine(nugetRoot, "netstandard.library.ref", "2.1.0", "ref", "netstandard2.1");
             framework = Directory.GetFiles(refDir, "*.dll").Select(f => (MetadataReference)MetadataReference.CreateFromFile(f)).ToList();
         }
+
+        /// <summary>The oldest editor a package.json admits: its "unity" (YEAR.MINOR) with its "unityRelease", or the
+        /// series' first release (0f1) without one. Both package.json minimums compared here (this package's, and a
+        /// stand-in package's) go through it, so "6000.0" is not taken for a release after 6000.0.0f1.</summary>
+        static string OldestEditor(string unity, string unityRelease = null) => unity + "." + (unityRelease ?? "0f1");
 
         static Dictionary<string, string> Versions(JsonElement root, string name) =>
             root.TryGetProperty(name, out var deps)
@@ -158,7 +163,7 @@ namespace HeadGait.UnityCompileCheck
             // (UNITY_20XX_Y_OR_NEWER) and versionDefines on "Unity" select the code that editor compiles.
             if (packageMinimumUnity != null && Semver.Parse(packageMinimumUnity).CompareTo(Semver.Parse(editorVersion)) < 0)
             {
-                var tooNew = StandIn.PackageMinimumUnity.Where(m => Semver.Parse(m.Value).CompareTo(Semver.Parse(packageMinimumUnity)) > 0)
+                var tooNew = StandIn.PackageMinimumUnity.Where(m => Semver.Parse(OldestEditor(m.Value)).CompareTo(Semver.Parse(packageMinimumUnity)) > 0)
                     .Select(m => m.Key).ToHashSet();
                 string without = tooNew.Count > 0 ? $", without {string.Join(" and ", tooNew.OrderBy(x => x, StringComparer.Ordinal))} (needs a newer editor)" : "";
                 Build($"package.json minimum, Unity {packageMinimumUnity}{without}, editor", tooNew, true, packageMinimumUnity);

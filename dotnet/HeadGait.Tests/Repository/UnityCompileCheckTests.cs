@@ -110,6 +110,34 @@ namespace HeadGait.Tests
             }
         }
 
+        [Test]
+        public void APackageForUnity6KeepsThePackagesThatNeedUnity6InItsMinimumEditorRun()
+        {
+            // "unity": "6000.0" is the editor 6000.0.0f1, not a release after it: com.unity.ai.inference (which says
+            // "unity": "6000.0" too) installs there, so the package.json-minimum run builds with it.
+            string project = Path.Combine(Path.GetTempPath(), "headgait-compile-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                string package = Path.Combine(project, "Packages", "com.headgait.legmotion");
+                Write(Path.Combine(project, "ProjectSettings", "ProjectVersion.txt"), "m_EditorVersion: 6000.0.40f1\n");
+                Write(Path.Combine(project, "Packages", "manifest.json"),
+                    "{ \"dependencies\": { \"com.unity.ugui\": \"2.0.0\", \"com.unity.xr.interaction.toolkit\": \"3.0.8\", \"com.unity.ai.inference\": \"2.2.1\", \"com.unity.test-framework\": \"1.4.6\" } }");
+                Write(Path.Combine(package, "package.json"), "{ \"name\": \"com.headgait.legmotion\", \"version\": \"0.0.1\", \"unity\": \"6000.0\", \"dependencies\": { \"com.unity.inputsystem\": \"1.7.0\" } }");
+                foreach (var stub in Directory.GetFiles(Path.Combine(Repository, "dotnet", "UnityStubs"), "*.cs"))
+                    Write(Path.Combine(project, "dotnet", "UnityStubs", Path.GetFileName(stub)), File.ReadAllText(stub));
+                Write(Path.Combine(package, "Core", "C.asmdef"), "{ \"name\": \"C\", \"noEngineReferences\": true }");
+                Write(Path.Combine(package, "Core", "C.cs"), "public class C { }");
+
+                var log = new StringWriter();
+                Assert.That(new Check(project, log).Run(), Is.True, log.ToString());
+                Assert.That(log.ToString(), Does.Contain("== package.json minimum, Unity 6000.0.0f1, editor\n"));
+            }
+            finally
+            {
+                if (Directory.Exists(project)) Directory.Delete(project, true);
+            }
+        }
+
         static void Write(string path, string text)
         {
             Directory.CreateDirectory(Path.GetDirectoryName(path));
