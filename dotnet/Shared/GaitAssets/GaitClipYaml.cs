@@ -6,8 +6,10 @@ namespace HeadGait.Tooling
     /// Writes one of <see cref="GaitClips"/> as a Unity AnimationClip (.anim, class 74) from <see cref="GaitClipCurves"/> (the
     /// editor's Create Gait Clips sets the same curves): runtime curves (m_PositionCurves, m_EulerCurves, keys of Vector3)
     /// and the per-component editor curves (m_EditorCurves: m_LocalPosition.x, localEulerAnglesRaw.x, ... on class 4
-    /// Transform) that Unity's Animation window edits and rebuilds the runtime clip from. Field layout follows clips saved by
-    /// Unity 2019-2022 in public projects (e.g. an AnimationClip writer found by searching 'localEulerAnglesRaw.x').
+    /// Transform) that Unity's Animation window edits and rebuilds the runtime clip from. Field layout follows clips saved in
+    /// public projects (e.g. an AnimationClip writer found by searching 'localEulerAnglesRaw.x'), at the AnimationClip
+    /// serializedVersion 7 that 2022.3 and Unity 6 write (2021.3 writes 6: the package needs Unity 6 for its other assets,
+    /// PackageMinimumEditorTests).
     /// </summary>
     public static class GaitClipYaml
     {
