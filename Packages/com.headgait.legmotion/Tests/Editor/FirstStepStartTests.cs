@@ -154,6 +154,30 @@ namespace HeadGait.Tests
         }
 
         /// <summary>
+        /// COR starts a walk resumed within 3 s of a walk shown for at least 2.5 s on its first step, as THR does on any walk
+        /// (<see cref="FirstStepStartSettings.ResumeAfterShown"/>): on the real glasses it shows more of the walking files as
+        /// walking than with the start off, and not one window more of standing, sitting or picking up, whose false walks are
+        /// shorter than that (classifier output, windows).
+        /// </summary>
+        [Test]
+        public void ShippedCorShowsMoreOfTheGlassesWalkingAndNoMoreOfTheirStillTime()
+        {
+            var shipped = new CorrelationSettings();
+            Assert.That(shipped.Clock.FirstStep.Enabled && shipped.Clock.FirstStep.ResumeAfterShown > 0, Is.True, "COR ships the start after a walk under way");
+            var off = shipped.Clone();
+            off.Clock.FirstStep = new FirstStepStartSettings();
+            var template = TestData.ShippedModels().Correlation;
+            int Shown(CorrelationSettings settings, IEnumerable<string> files)
+                => files.Sum(f => StillStartTests.Walks(new CorrelationClassifier(template, settings), RecordingCsv.Load(f)).Walking);
+            var walking = TestData.GlassesFiles("*_walking.csv");
+            var still = TestData.GlassesFiles("*_standing.csv").Concat(TestData.GlassesFiles("*_sitting*.csv")).Concat(TestData.GlassesFiles("*_standing_pickup.csv")).ToList();
+            int walkingOn = Shown(shipped, walking), walkingOff = Shown(off, walking), stillOn = Shown(shipped, still), stillOff = Shown(off, still);
+            TestContext.WriteLine($"walking shown {walkingOff} -> {walkingOn} windows; standing, sitting and picking up {stillOff} -> {stillOn}");
+            Assert.That(walkingOn, Is.GreaterThan(1.003 * walkingOff), "more of the walks shown");
+            Assert.That(stillOn, Is.LessThanOrEqualTo(stillOff), "no more still time shown as walking");
+        }
+
+        /// <summary>
         /// The step clock that keeps the learned classifiers' walks going runs THR's trained settings but not its first-step
         /// start: a provisional walk is no walk the gate passed (with it, the SVM's glasses fragments rose from 9 to 12). The
         /// shipped SVM shows exactly what it shows with the start switched off in its clock's settings.

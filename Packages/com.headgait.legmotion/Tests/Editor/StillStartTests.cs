@@ -66,7 +66,7 @@ namespace HeadGait.Tests
         }
 
         /// <summary>Windows shown walking, the longest run of them, and the first one's time.</summary>
-        static (int Walking, int Longest, double First) Walks(IGaitClassifier c, Recording r, Action<double> beforeEach = null)
+        internal static (int Walking, int Longest, double First) Walks(IGaitClassifier c, Recording r, Action<double> beforeEach = null)
         {
             int walking = 0, run = 0, longest = 0;
             double first = double.NaN;

@@ -123,9 +123,13 @@ namespace HeadGait
         /// slow scored 31.7 instead of 33.3 %, but a waving clip's false walks were shown longer (gestures and bows shown as
         /// walking, avatar, 1.58 to 1.69 %; the real glasses' picking up 1.7 to 1.8 %); with both conditions (and
         /// <see cref="ReplaceMargin"/>) slow 31.7 %, gestures 1.58 %, glasses standing 0.94 to 0.95 %, picking up 1.70 %
-        /// (see the measurements log).
+        /// (see the measurements log). Within 3 s of a walk shown for at least 2.5 s, a contact the gate refuses by less than
+        /// 0.75 log-odds starts a provisional walk, as THR's does (<see cref="FirstStepStartSettings.ResumeAfterShown"/>): a
+        /// walker resuming after a turn or a pause is shown walking a step sooner, and the still activities' and gestures'
+        /// false walks, shorter than that, give it no start.
         /// </summary>
-        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 3, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85 };
+        public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 3, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85,
+            FirstStep = new FirstStepStartSettings { Margin = 0.75, ConfirmWithin = 0.15, KeepMargin = 1, ResumeWithin = 3, ResumeAfterShown = 2.5 } };
 
         /// <summary>
         /// A full match (r at or above the threshold) that beats the last contact's r by this much, but comes too soon after it
