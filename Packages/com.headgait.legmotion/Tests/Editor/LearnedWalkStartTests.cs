@@ -40,6 +40,44 @@ namespace HeadGait.Tests
         static LearnedClassifier Create(GaitModels models, string kind, PhaseFilterSettings settings)
             => kind == "svm" ? new SvmClassifier(models.Svm, settings) : new BlstmClassifier(models.Blstm, settings);
 
+        /// <summary>
+        /// A walker going on after a turn or a pause (<see cref="PhaseFilterSettings.ResumeStart"/>): the model walks again 1 s
+        /// after a walk shown for 3 s, while the gate, still reading the pause, refuses by 0.5 log-odds. Shipped, the walk shows
+        /// on its first window; with the start off it waits for the gate. After a walk shown for only 1 s (a still
+        /// activity's false walk) or with the gate refusing by 1.5, it waits either way.
+        /// </summary>
+        [TestCase("svm")]
+        [TestCase("blstm")]
+        public void AWalkResumedSoonAfterAWalkUnderWayShowsThroughTheGatesNearMiss(string kind)
+        {
+            var models = Models;
+            var shipped = Shipped(models, kind, true).Filter.Settings;
+            Assert.That(shipped.ResumeStart.Enabled, Is.True, "shipped with the resumed walk's start");
+            var off = Settings(kind, true);
+            off.ResumeStart = new FirstStepStartSettings();
+            bool ResumedShown(PhaseFilterSettings settings, double shownFor, double refusedBy)
+            {
+                var c = Create(models, kind, settings);
+                var outputs = new double[c.OutputCount];
+                int begin = 400, end = begin + (int)Math.Round(shownFor * 100), resume = end + 100;
+                for (int i = 0; i < resume + 60; i++)
+                {
+                    bool first = i >= begin && i < end, again = i >= resume;
+                    SureOutputs.Write(c, first || again ? 0 : c.Segments.StandingClass, outputs);
+                    var gate = first ? GateVerdict.SurelyWalking : GateVerdict.Refuses;
+                    double logOdds = first ? 6 : again ? -refusedBy : -6;
+                    bool walking = c.ClassifyScored(outputs, 0, 0.01 * i, 100, gate, gateLogOdds: logOdds).IsWalking;
+                    if (first && i == end - 1) Assert.That(walking, Is.True, "the first walk is shown");
+                    if (again && walking) return true;
+                }
+                return false;
+            }
+            Assert.That(ResumedShown(shipped, 3, 0.5), Is.True, "shipped: shown through the near miss");
+            Assert.That(ResumedShown(off, 3, 0.5), Is.False, "off: it waits for the gate");
+            Assert.That(ResumedShown(shipped, 1, 0.5), Is.False, "after a walk shown for 1 s");
+            Assert.That(ResumedShown(shipped, 3, 1.5), Is.False, "refused by more than the margin");
+        }
+
         /// <summary>Windows a class ahead of standing in the scores: one stride of walking classes, standing after it.</summary>
         [TestCase("svm")]
         [TestCase("blstm")]

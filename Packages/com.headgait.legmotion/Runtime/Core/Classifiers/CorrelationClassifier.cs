@@ -129,7 +129,7 @@ namespace HeadGait
         /// false walks, shorter than that, give it no start.
         /// </summary>
         public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, PoseFitDelay = 0.01, HoldMinRhythmPeriod = 0.75, StillStartContacts = 3, TiltMoveStartContacts = 3, BendStartContacts = 2, StillWindowsMaxTiltChange = 10, StillWindowsAfterWalked = 0.85,
-            FirstStep = new FirstStepStartSettings { Margin = 0.75, ConfirmWithin = 0.15, KeepMargin = 1, ResumeWithin = 3, ResumeAfterShown = 2.5 } };
+            FirstStep = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5) };
 
         /// <summary>
         /// A full match (r at or above the threshold) that beats the last contact's r by this much, but comes too soon after it

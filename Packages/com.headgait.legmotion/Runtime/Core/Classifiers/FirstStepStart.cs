@@ -56,6 +56,15 @@ namespace HeadGait
 
         public bool Enabled => Margin > 0;
 
+        /// <summary>
+        /// The start as the classifiers ship it: a contact (THR, COR) or window (SVM, BLSTM, <see cref="PhaseFilterSettings.ResumeStart"/>)
+        /// the gate refuses by less than 0.75 log-odds, within 3 s of a walk shown for at least
+        /// <paramref name="resumeAfterShown"/> seconds (THR 0: any walk; COR, SVM and BLSTM 2.5), confirmed within 0.15 s and
+        /// withdrawn at once at -1 log-odds.
+        /// </summary>
+        public static FirstStepStartSettings Shipped(double resumeAfterShown)
+            => new FirstStepStartSettings { Margin = 0.75, ConfirmWithin = 0.15, KeepMargin = 1, ResumeWithin = 3, ResumeAfterShown = resumeAfterShown };
+
         public FirstStepStartSettings Clone() => (FirstStepStartSettings)MemberwiseClone();
     }
 

@@ -105,7 +105,7 @@ namespace HeadGait
         /// (<see cref="FirstStepStartSettings"/>): a walker resuming after a turn or a pause is shown walking a step sooner.
         /// </summary>
         public StepClockSettings Clock = new StepClockSettings { ContactsToStart = 1, EstablishedStopAfterStillWindows = 35, StillStartContacts = 2, TiltMoveStartContacts = 2, StartGateScoreWithin = 0.3,
-            FirstStep = new FirstStepStartSettings { Margin = 0.75, ConfirmWithin = 0.15, KeepMargin = 1, ResumeWithin = 3 } };
+            FirstStep = FirstStepStartSettings.Shipped(resumeAfterShown: 0) };
 
         public ThresholdSettings Clone()
         {

@@ -53,6 +53,8 @@ namespace HeadGait
         double lastShownWalk = double.NaN; // when a walking prediction was last shown (PhaseFilterSettings.FreshWalkShownAfter)
         double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
         double shownWalkSince = double.NaN; // when the walk going on was first shown; NaN while none is (PhaseFilterSettings.ShortWalkGivesNoCredit)
+        double previousWalkEnd = double.NaN, previousWalkShownFor; // the last shown walk that ended: when, and for how long it was shown (PhaseFilterSettings.ResumeStart)
+        double gateLogOdds = double.NaN; // the gate's log-odds at the last JudgeGate (NaN without a gate)
         ThresholdClassifier stepClock;     // THR on the model's gate (PhaseFilterSettings.WalkOnStepClock); made on first use
         double stepClockTime = double.NaN; // end of the last window it read
         double stepClockWalkingSince = double.NaN; // when its walk going on began; NaN while it stands
@@ -314,6 +316,8 @@ namespace HeadGait
             lastShownWalk = double.NaN;
             lastSurePass = double.NaN;
             shownWalkSince = double.NaN;
+            previousWalkEnd = double.NaN;
+            previousWalkShownFor = 0;
             ownWalkingShare = 0;
         }
 
@@ -392,7 +396,7 @@ namespace HeadGait
                 TakeOutputs(rowOutputs, 0);
             }
             var reading = Read(window);
-            return Decide(reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk);
+            return Decide(reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk, reading.GateLogOdds);
         }
 
         /// <summary>
@@ -404,13 +408,14 @@ namespace HeadGait
         /// </summary>
         public readonly struct WindowReading
         {
-            public readonly double Time, SampleRate, RhythmPeriod;
+            public readonly double Time, SampleRate, RhythmPeriod, GateLogOdds;
             public readonly GateVerdict Gate;
             public readonly HeadTiltReading Tilt;
             public readonly bool StepClockWalks, StepClockShowsWalk;
 
-            public WindowReading(double time, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmPeriod, bool stepClockWalks, bool stepClockShowsWalk)
+            public WindowReading(double time, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmPeriod, bool stepClockWalks, bool stepClockShowsWalk, double gateLogOdds = double.NaN)
             {
+                GateLogOdds = gateLogOdds;
                 Time = time;
                 SampleRate = sampleRate;
                 Gate = gate;
@@ -427,7 +432,7 @@ namespace HeadGait
             var gate = JudgeGate(window); // reads the rhythm's step period too
             var tiltReading = ReadTilt(window);
             bool walks = FollowStepClock(window);
-            return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, walks, !double.IsNaN(stepClockWalkingSince));
+            return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, walks, !double.IsNaN(stepClockWalkingSince), gateLogOdds);
         }
 
         /// <summary>
@@ -498,9 +503,12 @@ namespace HeadGait
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
         public GateVerdict JudgeGate(SignalWindow window)
         {
+            gateLogOdds = double.NaN;
             if (Gate == null) return GateVerdict.Passes;
             FollowRhythm(window);
-            if (!Gate.Passes(window, out double logOdds))
+            bool passes = Gate.Passes(window, out double logOdds);
+            gateLogOdds = logOdds;
+            if (!passes)
             {
                 if (rhythmHolds) return GateVerdict.RefusesInStepRhythm;
                 double narrow = filter?.Settings.NarrowRefusalLogOdds ?? 0;
@@ -536,15 +544,15 @@ namespace HeadGait
         /// <see cref="JudgeGate"/> judged it (0: none); <paramref name="stepClockWalks"/>: what <see cref="FollowStepClock"/> returned for it; <paramref name="stepClockShowsWalk"/>: whether
         /// THR's step clock showed a walk at it, settled or not (<see cref="WindowReading.StepClockShowsWalk"/>).
         /// </summary>
-        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0, bool stepClockWalks = false, bool stepClockShowsWalk = false)
+        public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0, bool stepClockWalks = false, bool stepClockShowsWalk = false, double gateLogOdds = double.NaN)
         {
             TakeOutputs(batchOutputs, row * WindowOutputCount);
-            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod, stepClockWalks, stepClockShowsWalk);
+            return Decide(endTime, sampleRate, gate, tilt, rhythmStepPeriod, stepClockWalks, stepClockShowsWalk, gateLogOdds);
         }
 
         /// <summary>The window <see cref="Read"/> read, its outputs row <paramref name="row"/> of <paramref name="batchOutputs"/> (see the overload above).</summary>
         public GaitPrediction ClassifyScored(double[] batchOutputs, int row, in WindowReading reading)
-            => ClassifyScored(batchOutputs, row, reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk);
+            => ClassifyScored(batchOutputs, row, reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk, reading.GateLogOdds);
 
         /// <summary>
         /// The wearer's probabilities, which pick the walking class (<see cref="Decide"/>): with their output shifts
@@ -569,7 +577,7 @@ namespace HeadGait
         bool IsYoung(double now) => WasWalking && now - walkStartTime < HeadTilt.YoungWalk;
 
         /// <summary>From the window's outputs (in <see cref="outputs"/>) to its prediction.</summary>
-        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod, bool stepClockWalks, bool stepClockShowsWalk)
+        GaitPrediction Decide(double now, double sampleRate, GateVerdict gate, HeadTiltReading tilt, double rhythmStepPeriod, bool stepClockWalks, bool stepClockShowsWalk, double gateLogOdds)
         {
             ClassScores(outputs, scores);
             ToProbabilities(scores, probabilities);
@@ -577,6 +585,7 @@ namespace HeadGait
             bool bendingFromStill = BendingFromStill(tilt, now); // read every window: it follows the standing before a start
             bool bending = Bending(tilt.Change, now) || bendingFromStill;
             if (bending) gate = GateVerdict.Refuses;
+            else if (ResumesThroughRefusal(gate, gateLogOdds, now)) gate = GateVerdict.Passes;
             if (gate == GateVerdict.SurelyWalking) lastSurePass = now;
             bool refused = gate == GateVerdict.Refuses || gate == GateVerdict.RefusesInStepRhythm || gate == GateVerdict.RefusesNarrowly;
             refusedRun = refused ? refusedRun + 1 : 0;
@@ -727,12 +736,31 @@ namespace HeadGait
                && !(now - lastShownWalk < filter.Settings.FreshWalkGap);
 
         /// <summary>
+        /// Whether a window the gate refuses counts as passed as a resumed walk's (<see cref="PhaseFilterSettings.ResumeStart"/>):
+        /// by less than its margin, with no walk or a young one going on, soon enough after a walk shown long enough.
+        /// </summary>
+        bool ResumesThroughRefusal(GateVerdict gate, double logOdds, double now)
+        {
+            var resume = filter?.Settings.ResumeStart;
+            if (resume == null || !resume.Enabled || !(logOdds > -resume.Margin)) return false;
+            if (gate == GateVerdict.Passes || gate == GateVerdict.SurelyWalking) return false;
+            if (WasWalking && !IsYoung(now)) return false;
+            double since = WasWalking ? walkStartTime : now;
+            return since - previousWalkEnd <= resume.ResumeWithin && previousWalkShownFor >= resume.ResumeAfterShown;
+        }
+
+        /// <summary>
         /// A walk ends: one shown for less than <see cref="HeadTilt.YoungWalk"/> leaves the next walk no credit (nor the
         /// stream's start any) where <see cref="PhaseFilterSettings.ShortWalkGivesNoCredit"/> says so, unless THR's step clock
         /// shows a walk as it ends (<paramref name="stepClockShowsWalk"/>).
         /// </summary>
         void EndShownWalk(bool stepClockShowsWalk)
         {
+            if (!double.IsNaN(shownWalkSince))
+            {
+                previousWalkEnd = lastShownWalk;
+                previousWalkShownFor = lastShownWalk - shownWalkSince;
+            }
             if (filter != null && filter.Settings.ShortWalkGivesNoCredit && !stepClockShowsWalk && lastShownWalk - shownWalkSince < HeadTilt.YoungWalk)
                 lastShownWalk = double.NaN;
             shownWalkSince = double.NaN;

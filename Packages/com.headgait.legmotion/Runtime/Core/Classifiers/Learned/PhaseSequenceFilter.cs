@@ -114,6 +114,17 @@ namespace HeadGait
         public double NarrowRefusalLogOdds = 0;
 
         /// <summary>
+        /// A walk resumed soon after a walk under way (a walker going on after a turn or a pause): within
+        /// <see cref="FirstStepStartSettings.ResumeWithin"/> seconds of a walk shown for at least
+        /// <see cref="FirstStepStartSettings.ResumeAfterShown"/>, a window the gate refuses by less than
+        /// <see cref="FirstStepStartSettings.Margin"/> log-odds counts as passed while no walk, or a young one
+        /// (<see cref="HeadTilt.YoungWalk"/>), goes on: the gate's half second still holds the pause at the walk's first step,
+        /// as THR's and COR's provisional start on a first step meets it (<see cref="StepClockSettings.FirstStep"/>). Off
+        /// (<see cref="FirstStepStartSettings.Margin"/> 0) unless set; the other members of the settings are not read.
+        /// </summary>
+        public FirstStepStartSettings ResumeStart = new FirstStepStartSettings();
+
+        /// <summary>
         /// Most the head's tilt may have moved over the newest <see cref="HeadTilt.Span"/> seconds for a walk to start
         /// (degrees; the shared step clock's limit, <see cref="StepClockSettings.MaxStartTiltChange"/>): while it moves more,
         /// a window is standing whatever the model and the gate say. Bending down to pick something up and straightening
