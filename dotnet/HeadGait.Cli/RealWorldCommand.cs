@@ -27,12 +27,26 @@ namespace HeadGait.Cli
             var train = new Option<string[]>("--train") { Description = "with --cv person: the labelled recordings the gates also learn from (as `train --data`, e.g. ../shared/data/real-train)", AllowMultipleArgumentsPerToken = true };
             var firstStep = new Option<string>("--first-step") { Description = "THR and COR start a provisional walk on a contact the walking gate refuses by less than MARGIN (FirstStepStartSettings): MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S[,AFTER_SHOWN_S]]]] (defaults 0.15 s, 0, 0: any time, 0: after any walk); replaces the shipped setting (THR 0.75,0.15,1,3; COR 0.75,0.15,1,3,2.5)" };
             var noPutOn = new Option<bool>("--no-put-on") { Description = "do not add the generated put-on streams (PutOnGlassesGenerator over each standing and sitting recording, reported as putting on glasses) that are added when --data holds no putting_on_glasses recordings of its own" };
+            var putOnDraws = new Option<int>("--put-on-draws") { Description = "generated put-on streams per standing and sitting recording, each drawn afresh (default 1: one draw, seeded from the recording's name; more narrow the put-on figure's spread)", DefaultValueFactory = _ => 1 };
             var command = new Command("realworld", "Replays unlabelled real recordings (an activity per file) through the live pipeline and reports walking shown, cadence, alternation, fragments, the start of bouts met standing and non-walking shown as walking, against the rhythm the signal itself shows.")
             {
-                data, classifier, models, perPerson, cv, train, firstStep, noPutOn,
+                data, classifier, models, perPerson, cv, train, firstStep, noPutOn, putOnDraws,
             };
-            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train), ParseFirstStep(parse.GetValue(firstStep)), !parse.GetValue(noPutOn)));
+            command.SetAction(parse => Run(parse.GetValue(data), parse.GetValue(classifier), parse.GetValue(models), parse.GetValue(perPerson), parse.GetValue(cv), parse.GetValue(train), ParseFirstStep(parse.GetValue(firstStep)), !parse.GetValue(noPutOn), parse.GetValue(putOnDraws)));
             return command;
+        }
+
+        /// <summary>
+        /// Put-on stream <paramref name="draw"/> over a worn recording: the first as ever (seeded from its name), each further
+        /// one from its own seed and named with its number, so that every draw is a recording of its own in the report.
+        /// </summary>
+        static Recording PutOnDraw(Recording worn, int draw)
+        {
+            if (draw == 0) return PutOnGlassesGenerator.From(worn, DeterministicRandom.SeedFrom(worn.Name));
+            var generated = PutOnGlassesGenerator.From(worn, DeterministicRandom.SeedFrom(worn.Name + "#" + draw));
+            var named = new Recording(generated.Name + "_" + (draw + 1), generated.Samples);
+            foreach (var kv in generated.Metadata) named.Metadata[kv.Key] = kv.Value;
+            return named;
         }
 
         /// <summary>Reads --first-step (MARGIN[,CONFIRM_S[,KEEP_MARGIN[,RESUME_S[,AFTER_SHOWN_S]]]]); null when not given.</summary>
@@ -70,8 +84,9 @@ namespace HeadGait.Cli
             }
         }
 
-        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep, bool putOn)
+        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep, bool putOn, int putOnDraws = 1)
         {
+            if (putOnDraws < 1 || putOnDraws > 20) throw new UsageException($"--put-on-draws is 1 to 20, not {putOnDraws}");
             bool byPerson = cv switch
             {
                 null or "" or "none" => false,
@@ -94,9 +109,10 @@ namespace HeadGait.Cli
                 // recordings, after the gates were trained (they never learn from it).
                 var worn = recordings.Where(r => RealActivity.Of(r) is RealActivity.Standing or RealActivity.SittingHeadMovement
                                                  && r.Samples.Count >= PutOnGlassesGenerator.MinSamples).ToList();
-                recordings.AddRange(worn.Select(r => PutOnGlassesGenerator.From(r, DeterministicRandom.SeedFrom(r.Name))));
+                for (int draw = 0; draw < putOnDraws; draw++)
+                    recordings.AddRange(worn.Select(r => PutOnDraw(r, draw)));
                 generatedPutOns = worn.Count > 0;
-                if (worn.Count > 0) Console.WriteLine($"Putting on glasses: generated over the {worn.Count} standing and sitting recordings (PutOnGlassesGenerator; --no-put-on leaves them out).");
+                if (worn.Count > 0) Console.WriteLine($"Putting on glasses: generated over the {worn.Count} standing and sitting recordings{(putOnDraws > 1 ? $", {putOnDraws} draws each" : "")} (PutOnGlassesGenerator; --no-put-on leaves them out).");
             }
             var references = new RhythmReference[recordings.Count];
             Parallel.For(0, recordings.Count, i => references[i] = RhythmReference.Of(recordings[i]));

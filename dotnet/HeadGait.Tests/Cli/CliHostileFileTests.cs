@@ -4,6 +4,7 @@ using System;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
+using System.Linq;
 using System.Text;
 using System.Threading;
 using NUnit.Framework;
@@ -140,6 +141,25 @@ namespace HeadGait.Tests.Cli
                 File.WriteAllLines(Path.Combine(data, name + ".csv"), lines);
             }
             Hostile("a 1-s standing recording", 0, "generated over the 1 standing and sitting recordings", "realworld", "--data", data, "--classifier", "thr");
+        }
+
+        /// <summary>
+        /// `realworld --put-on-draws N` generates N put-on streams over each still recording, each its own draw and its own
+        /// row (the first as with one draw); 0 is refused as a usage error.
+        /// </summary>
+        [Test]
+        public void RealWorldPutOnDrawsAreRecordingsOfTheirOwn()
+        {
+            string data = Path.Combine(folder, "still");
+            Directory.CreateDirectory(data);
+            var lines = new System.Collections.Generic.List<string> { "# activity=standing", "timestamp_s,acc_x,acc_y,acc_z" };
+            for (int i = 0; i < 600; i++) lines.Add(string.Format(System.Globalization.CultureInfo.InvariantCulture, "{0:F2},{1:F3},0,9.80665", i * 0.01, 0.02 * Math.Sin(i * 0.3)));
+            File.WriteAllLines(Path.Combine(data, "p1_e001_standing.csv"), lines);
+            string csv = Path.Combine(folder, "draws.csv");
+            Hostile("three put-on draws", 0, "3 draws each", "realworld", "--data", data, "--classifier", "thr", "--put-on-draws", "3", "--per-person", csv);
+            var putOns = File.ReadAllLines(csv).Skip(1).Where(l => l.Contains(",putting_on_glasses,")).Select(l => l.Split(',')[0]).ToList();
+            Assert.That(putOns, Is.EquivalentTo(new[] { "p1_e001_standing_putting_on_glasses", "p1_e001_standing_putting_on_glasses_2", "p1_e001_standing_putting_on_glasses_3" }));
+            Hostile("no put-on draw", 2, "--put-on-draws is 1 to 20", "realworld", "--data", data, "--classifier", "thr", "--put-on-draws", "0");
         }
 
         [Test]
