@@ -56,16 +56,9 @@ namespace HeadGait.Tests
         [Test]
         public void FailsWhereUnityWouldAndPassesOnceTheAsmdefsAreRight()
         {
-            string project = Path.Combine(Path.GetTempPath(), "headgait-compile-" + Guid.NewGuid().ToString("N"));
+            string project = MadeUpProject("2021.3", ", \"testables\": [ \"com.headgait.legmotion\" ]", out string package);
             try
             {
-                string package = Path.Combine(project, "Packages", "com.headgait.legmotion");
-                Write(Path.Combine(project, "ProjectSettings", "ProjectVersion.txt"), "m_EditorVersion: 6000.0.40f1\n");
-                Write(Path.Combine(project, "Packages", "manifest.json"),
-                    "{ \"dependencies\": { \"com.unity.test-framework\": \"1.4.6\", \"com.unity.ugui\": \"2.0.0\", \"com.unity.xr.interaction.toolkit\": \"3.0.8\", \"com.unity.ai.inference\": \"2.2.1\" }, \"testables\": [ \"com.headgait.legmotion\" ] }");
-                Write(Path.Combine(package, "package.json"), "{ \"name\": \"com.headgait.legmotion\", \"version\": \"0.0.1\", \"unity\": \"2021.3\", \"dependencies\": { \"com.unity.inputsystem\": \"1.7.0\" } }");
-                foreach (var stub in Directory.GetFiles(Path.Combine(Repository, "dotnet", "UnityStubs"), "*.cs"))
-                    Write(Path.Combine(project, "dotnet", "UnityStubs", Path.GetFileName(stub)), File.ReadAllText(stub));
                 // A test assembly as Unity's Test Runner makes them, using a library it does not reference.
                 Write(Path.Combine(package, "Tests", "T.asmdef"),
                     "{ \"name\": \"T\", \"references\": [ \"UnityEngine.TestRunner\" ], \"overrideReferences\": true, \"precompiledReferences\": [ \"nunit.framework.dll\" ], \"defineConstraints\": [ \"UNITY_INCLUDE_TESTS\" ], \"autoReferenced\": false }");
@@ -115,16 +108,9 @@ namespace HeadGait.Tests
         {
             // "unity": "6000.0" is the editor 6000.0.0f1, not a release after it: com.unity.ai.inference (which says
             // "unity": "6000.0" too) installs there, so the package.json-minimum run builds with it.
-            string project = Path.Combine(Path.GetTempPath(), "headgait-compile-" + Guid.NewGuid().ToString("N"));
+            string project = MadeUpProject("6000.0", "", out string package);
             try
             {
-                string package = Path.Combine(project, "Packages", "com.headgait.legmotion");
-                Write(Path.Combine(project, "ProjectSettings", "ProjectVersion.txt"), "m_EditorVersion: 6000.0.40f1\n");
-                Write(Path.Combine(project, "Packages", "manifest.json"),
-                    "{ \"dependencies\": { \"com.unity.ugui\": \"2.0.0\", \"com.unity.xr.interaction.toolkit\": \"3.0.8\", \"com.unity.ai.inference\": \"2.2.1\", \"com.unity.test-framework\": \"1.4.6\" } }");
-                Write(Path.Combine(package, "package.json"), "{ \"name\": \"com.headgait.legmotion\", \"version\": \"0.0.1\", \"unity\": \"6000.0\", \"dependencies\": { \"com.unity.inputsystem\": \"1.7.0\" } }");
-                foreach (var stub in Directory.GetFiles(Path.Combine(Repository, "dotnet", "UnityStubs"), "*.cs"))
-                    Write(Path.Combine(project, "dotnet", "UnityStubs", Path.GetFileName(stub)), File.ReadAllText(stub));
                 Write(Path.Combine(package, "Core", "C.asmdef"), "{ \"name\": \"C\", \"noEngineReferences\": true }");
                 Write(Path.Combine(package, "Core", "C.cs"), "public class C { }");
 
@@ -136,6 +122,24 @@ namespace HeadGait.Tests
             {
                 if (Directory.Exists(project)) Directory.Delete(project, true);
             }
+        }
+
+        /// <summary>
+        /// A made-up Unity 6000.0.40f1 project in a fresh temporary folder: the manifest's optional packages (plus
+        /// <paramref name="manifestTail"/>, e.g. testables), a package declaring <paramref name="unityMinimum"/> and the
+        /// Unity stand-ins; <paramref name="package"/> is the package's folder.
+        /// </summary>
+        static string MadeUpProject(string unityMinimum, string manifestTail, out string package)
+        {
+            string project = Path.Combine(Path.GetTempPath(), "headgait-compile-" + Guid.NewGuid().ToString("N"));
+            package = Path.Combine(project, "Packages", "com.headgait.legmotion");
+            Write(Path.Combine(project, "ProjectSettings", "ProjectVersion.txt"), "m_EditorVersion: 6000.0.40f1\n");
+            Write(Path.Combine(project, "Packages", "manifest.json"),
+                "{ \"dependencies\": { \"com.unity.test-framework\": \"1.4.6\", \"com.unity.ugui\": \"2.0.0\", \"com.unity.xr.interaction.toolkit\": \"3.0.8\", \"com.unity.ai.inference\": \"2.2.1\" }" + manifestTail + " }");
+            Write(Path.Combine(package, "package.json"), "{ \"name\": \"com.headgait.legmotion\", \"version\": \"0.0.1\", \"unity\": \"" + unityMinimum + "\", \"dependencies\": { \"com.unity.inputsystem\": \"1.7.0\" } }");
+            foreach (var stub in Directory.GetFiles(Path.Combine(Repository, "dotnet", "UnityStubs"), "*.cs"))
+                Write(Path.Combine(project, "dotnet", "UnityStubs", Path.GetFileName(stub)), File.ReadAllText(stub));
+            return project;
         }
 
         static void Write(string path, string text)
