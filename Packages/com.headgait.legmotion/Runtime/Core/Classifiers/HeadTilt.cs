@@ -15,7 +15,7 @@ namespace HeadGait
         /// <summary>Degrees the head's tilt moved over the newest <see cref="HeadTilt.Span"/> seconds.</summary>
         public double Change { get; }
 
-        /// <summary>Degrees the head's pitch lies from the last still head's (<see cref="HeadTilt.FollowStill"/>); 0 before one.</summary>
+        /// <summary>Degrees the head's pitch (with <see cref="HeadTilt.BendInRoll"/>, its whole direction of gravity) lies from the last still head's (<see cref="HeadTilt.FollowStill"/>); 0 before one.</summary>
         public double BendFromStill { get; }
 
         /// <summary>Seconds since the head was last read still (infinite before that).</summary>
@@ -186,6 +186,7 @@ namespace HeadGait
 
         int countdown;
         double stillPitch;                        // the last still head's pitch (radians)
+        double stillForward, stillLeft, stillUp;  // the last still head's direction of gravity (unit), for BendInRoll
         double stillSeen = double.NegativeInfinity;
 
         /// <summary>Degrees the head's tilt moved over the newest <see cref="Span"/> seconds, at the last reading.</summary>
@@ -203,6 +204,14 @@ namespace HeadGait
         }
 
         public HeadTilt() => Reset();
+
+        /// <summary>
+        /// Whether the bend from the still head (<see cref="HeadTiltReading.BendFromStill"/>) is the angle between the whole
+        /// directions of gravity, pitch and roll, rather than the pitch's alone (the default: bending to the floor pitches
+        /// the head, and a step's sway rolls a short mean by a few degrees). Used by the SVM and BLSTM
+        /// (<see cref="PhaseFilterSettings.StillStartBendInRoll"/>). Both are kept of every still head, so it may change at any window.
+        /// </summary>
+        public bool BendInRoll { get; set; }
 
         /// <summary>
         /// Reads the tilt from <paramref name="window"/> every <see cref="EveryWindows"/> windows (call it for every window, in
@@ -234,8 +243,13 @@ namespace HeadGait
             {
                 stillPitch = Math.Atan2(forward, vertical);
                 stillSeen = now;
+                Direction(window, StillSpan, StillGap, out stillForward, out stillLeft, out stillUp);
             }
-            double bend = !double.IsNegativeInfinity(stillSeen) && Pitch(window, BendMean, out double newest) ? Degrees(newest - stillPitch) : 0;
+            double bend = 0;
+            if (double.IsNegativeInfinity(stillSeen)) { }
+            else if (!BendInRoll) bend = Pitch(window, BendMean, out double newest) ? Degrees(newest - stillPitch) : 0;
+            else if (Direction(window, BendMean, 0, out double f, out double l, out double u))
+                bend = Math.Acos(Math.Max(-1, Math.Min(1, f * stillForward + l * stillLeft + u * stillUp))) * 180 / Math.PI;
             Reading = new HeadTiltReading(Change, bend, now - stillSeen);
         }
 
@@ -257,6 +271,30 @@ namespace HeadGait
             }
             if (x * x + z * z <= 1e-12) return false;
             pitch = Math.Atan2(x, z);
+            return true;
+        }
+
+        /// <summary>
+        /// The unit direction of the head-frame acceleration's mean over <paramref name="seconds"/> ending <paramref name="gap"/>
+        /// seconds before the window's end (gravity's direction where the head holds still); false where the window holds too
+        /// few samples.
+        /// </summary>
+        static bool Direction(SignalWindow w, double seconds, double gap, out double forward, out double left, out double up)
+        {
+            forward = left = up = 0;
+            int n = Math.Max(1, (int)Math.Round(seconds * w.SampleRate)), end = w.Length - (int)Math.Round(gap * w.SampleRate);
+            if (end - n < w.Length - Math.Min(w.Count, w.Length)) return false;
+            for (int i = end - n; i < end; i++)
+            {
+                forward += w.Forward[i];
+                left += w.Lateral[i];
+                up += w.Vertical[i];
+            }
+            double norm = Math.Sqrt(forward * forward + left * left + up * up);
+            if (norm <= 1e-9) return false;
+            forward /= norm;
+            left /= norm;
+            up /= norm;
             return true;
         }
 

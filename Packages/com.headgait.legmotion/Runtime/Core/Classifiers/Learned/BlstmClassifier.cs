@@ -49,10 +49,12 @@ namespace HeadGait
         /// A walk resumed within 3 s of a walk shown for 2.5 s shows through the gate's refusal by less than 0.75 log-odds
         /// (<see cref="PhaseFilterSettings.ResumeStart"/>, as the SVM's): glasses (avatar) walking 95.2 to 95.3 % (worst tenth
         /// 85.9 to 86.2), bouts shown within 0.3 s of their first step 79.3 to 80.8 %, still activities and put-ons to the
-        /// sample as before (no style folds here for the BLSTM's style CV).
+        /// sample as before (no style folds here for the BLSTM's style CV). Its still-start rule reads the bend in pitch and
+        /// roll, as the SVM's (<see cref="PhaseFilterSettings.StillStartBendInRoll"/>): putting on 0.84 to 0.70 %, standing
+        /// 0.75 to 0.61 %, sitting 0.42 to 0.39 %, picking up 1.16 to 1.04 %, walking 95.3 to 95.2 % (worst tenth 86.2 to 85.5).
         /// </summary>
         public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings { WalkOnStepClock = true, FreshWalkShownAfter = 0.25,
-            ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5) };
+            ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5), StillStartBendInRoll = true };
 
         /// <summary>With the given time filter, or none (null): the network's own per-window answers, as the paper's classifier.</summary>
         public BlstmClassifier(ModelFile model, PhaseFilterSettings filter) : base(model, Kind, filter)

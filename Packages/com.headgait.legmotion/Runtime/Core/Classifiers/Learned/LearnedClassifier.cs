@@ -448,6 +448,7 @@ namespace HeadGait
             if (filter == null) return default;
             var s = filter.Settings;
             if (!(s.MaxStartTiltChange > 0 || s.MaxWalkingTiltChange > 0 || s.StillStartMaxBend > 0)) return default;
+            tilt.BendInRoll = s.StillStartBendInRoll;
             tilt.Follow(window, s.StillStartMaxBend > 0);
             return tilt.Reading;
         }

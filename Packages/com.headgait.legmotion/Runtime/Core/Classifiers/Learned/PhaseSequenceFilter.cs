@@ -145,6 +145,14 @@ namespace HeadGait
         /// </summary>
         public double StillStartMaxBend = HeadTilt.DefaultStillStartMaxBend;
 
+        /// <summary>
+        /// Whether <see cref="StillStartMaxBend"/> reads the head's whole direction of gravity against the still head's
+        /// (pitch and roll, <see cref="HeadTilt.BendInRoll"/>) rather than its pitch alone: glasses taken off a still head
+        /// are turned in the hand every way, and the SVM's walks in those take-offs began while the pitch stayed within
+        /// the limit (see <see cref="SvmClassifier.DefaultFilter"/>).
+        /// </summary>
+        public bool StillStartBendInRoll = false;
+
         /// <summary>Weight of the model's standing probability in a window the gate is sure of (see <see cref="SureWalkingLogOdds"/>).</summary>
         public double SureWalkingStandingWeight = 0.01;
 
