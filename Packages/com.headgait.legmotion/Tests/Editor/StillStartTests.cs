@@ -290,7 +290,8 @@ namespace HeadGait.Tests
         /// <summary>
         /// The SVM reads its still-start bend in roll too (<see cref="PhaseFilterSettings.StillStartBendInRoll"/>): on glasses
         /// taken off and put on over the glasses wearers' standing and sitting recordings (<see cref="PutOnGlassesGenerator"/>)
-        /// it shows fewer windows as walking than with the bend read in pitch alone, and the walking files nearly as many.
+        /// it shows fewer windows as walking than with the bend read in pitch alone, and the walking files nearly as many
+        /// (over every file and five draws: the measurements log).
         /// </summary>
         [Test]
         public void ShippedSvmShowsLessOfTheGeneratedPutOnsAsWalkingWithTheBendReadInRoll()
@@ -303,12 +304,13 @@ namespace HeadGait.Tests
                 svm.Filter.Settings.StillStartBendInRoll = inRoll;
                 return svm;
             }
-            var putOns = TestData.GlassesFiles("*_standing.csv").Concat(TestData.GlassesFiles("*_sitting_head_movement.csv"))
+            // The standing files' put-ons and nine people's walks: enough to show the effect, in half the time of every file.
+            var putOns = TestData.GlassesFiles("*_standing.csv")
                 .Select(f => RecordingCsv.Load(f)).Where(r => r.Samples.Count >= PutOnGlassesGenerator.MinSamples)
                 .Select(r => PutOnGlassesGenerator.From(r, DeterministicRandom.SeedFrom(r.Name))).ToList();
             int Shown(bool inRoll, IEnumerable<Recording> recordings) => recordings.Sum(r => Walks(Svm(inRoll), r).Walking);
             int with = Shown(true, putOns), without = Shown(false, putOns);
-            var walking = TestData.GlassesFiles("*_walking.csv").Select(f => RecordingCsv.Load(f)).ToList();
+            var walking = TestData.GlassesFiles("cg1a_u0*_walking.csv").Select(f => RecordingCsv.Load(f)).ToList();
             int walkingWith = Shown(true, walking), walkingWithout = Shown(false, walking);
             TestContext.WriteLine($"put-ons shown walking {without} -> {with} windows; walking {walkingWithout} -> {walkingWith}");
             Assert.That(with, Is.LessThan(0.95 * without), "less of the put-ons shown as walking");
