@@ -84,7 +84,7 @@ namespace HeadGait.Cli
             }
         }
 
-        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep, bool putOn, int putOnDraws = 1)
+        static int Run(string[] data, string classifierList, string modelFolder, string perPersonCsv, string cv, string[] train, FirstStepStartSettings firstStep, bool putOn, int putOnDraws)
         {
             if (putOnDraws < 1 || putOnDraws > 20) throw new UsageException($"--put-on-draws is 1 to 20, not {putOnDraws}");
             bool byPerson = cv switch

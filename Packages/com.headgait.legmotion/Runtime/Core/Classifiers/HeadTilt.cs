@@ -239,62 +239,46 @@ namespace HeadGait
         public void FollowStill(SignalWindow window, bool readStill = true)
         {
             double now = window.EndTime;
-            if (readStill && StillDirection(window, StillSpan, StillGap, StillMaxSpread, out double forward, out double vertical))
+            if (readStill && StillDirection(window, StillSpan, StillGap, StillMaxSpread, out double forward, out double lateral, out double vertical))
             {
                 stillPitch = Math.Atan2(forward, vertical);
                 stillSeen = now;
-                Direction(window, StillSpan, StillGap, out stillForward, out stillLeft, out stillUp);
+                double norm = Math.Sqrt(forward * forward + lateral * lateral + vertical * vertical);
+                stillForward = forward / norm;
+                stillLeft = lateral / norm;
+                stillUp = vertical / norm;
             }
             double bend = 0;
-            if (double.IsNegativeInfinity(stillSeen)) { }
-            else if (!BendInRoll) bend = Pitch(window, BendMean, out double newest) ? Degrees(newest - stillPitch) : 0;
-            else if (Direction(window, BendMean, 0, out double f, out double l, out double u))
-                bend = Math.Acos(Math.Max(-1, Math.Min(1, f * stillForward + l * stillLeft + u * stillUp))) * 180 / Math.PI;
+            if (!double.IsNegativeInfinity(stillSeen) && NewestSums(window, BendMean, out double f, out double l, out double u))
+            {
+                if (!BendInRoll)
+                    bend = f * f + u * u > 1e-12 ? Degrees(Math.Atan2(f, u) - stillPitch) : 0;
+                else
+                {
+                    double norm = Math.Sqrt(f * f + l * l + u * u);
+                    if (norm > 1e-9) bend = Math.Acos(Math.Max(-1, Math.Min(1, (f * stillForward + l * stillLeft + u * stillUp) / norm))) * 180 / Math.PI;
+                }
+            }
             Reading = new HeadTiltReading(Change, bend, now - stillSeen);
         }
 
         /// <summary>
-        /// The head's pitch (radians: the direction of gravity in the forward-vertical plane; only the pitch, as bending to
-        /// the floor tilts the head forwards and a step's sway would add its roll) over the window's newest
-        /// <paramref name="seconds"/>; false where the window holds too few samples.
+        /// The head-frame acceleration summed over the window's newest <paramref name="seconds"/>: its pitch (the direction of
+        /// gravity in the forward-vertical plane; only the pitch as a rule, as bending to the floor tilts the head forwards and
+        /// a step's sway would add its roll) or its whole direction (<see cref="BendInRoll"/>); false where the window holds
+        /// too few samples.
         /// </summary>
-        static bool Pitch(SignalWindow w, double seconds, out double pitch)
+        static bool NewestSums(SignalWindow w, double seconds, out double forward, out double lateral, out double vertical)
         {
-            pitch = 0;
+            forward = lateral = vertical = 0;
             int n = Math.Max(1, (int)Math.Round(seconds * w.SampleRate));
             if (n > Math.Min(w.Count, w.Length)) return false;
-            double x = 0, z = 0;
             for (int i = w.Length - n; i < w.Length; i++)
             {
-                x += w.Forward[i];
-                z += w.Vertical[i];
-            }
-            if (x * x + z * z <= 1e-12) return false;
-            pitch = Math.Atan2(x, z);
-            return true;
-        }
-
-        /// <summary>
-        /// The unit direction of the head-frame acceleration's mean over <paramref name="seconds"/> ending <paramref name="gap"/>
-        /// seconds before the window's end (gravity's direction where the head holds still); false where the window holds too
-        /// few samples.
-        /// </summary>
-        static bool Direction(SignalWindow w, double seconds, double gap, out double forward, out double left, out double up)
-        {
-            forward = left = up = 0;
-            int n = Math.Max(1, (int)Math.Round(seconds * w.SampleRate)), end = w.Length - (int)Math.Round(gap * w.SampleRate);
-            if (end - n < w.Length - Math.Min(w.Count, w.Length)) return false;
-            for (int i = end - n; i < end; i++)
-            {
                 forward += w.Forward[i];
-                left += w.Lateral[i];
-                up += w.Vertical[i];
+                lateral += w.Lateral[i];
+                vertical += w.Vertical[i];
             }
-            double norm = Math.Sqrt(forward * forward + left * left + up * up);
-            if (norm <= 1e-9) return false;
-            forward /= norm;
-            left /= norm;
-            up /= norm;
             return true;
         }
 
@@ -308,23 +292,25 @@ namespace HeadGait
         /// <summary>
         /// Whether the head was still over <paramref name="seconds"/> ending <paramref name="gap"/> seconds before the
         /// window's end (SMV's standard deviation at most <paramref name="maxSpread"/>), and its mean acceleration then
-        /// forwards and upwards (head frame). False where the window holds too few samples.
+        /// forwards, to the left and upwards (head frame). False where the window holds too few samples.
         /// </summary>
-        public static bool StillDirection(SignalWindow w, double seconds, double gap, double maxSpread, out double forward, out double vertical)
+        public static bool StillDirection(SignalWindow w, double seconds, double gap, double maxSpread, out double forward, out double lateral, out double vertical)
         {
-            forward = vertical = 0;
+            forward = lateral = vertical = 0;
             int n = (int)Math.Round(seconds * w.SampleRate), end = w.Length - (int)Math.Round(gap * w.SampleRate);
             if (n < 2 || end - n < w.Length - Math.Min(w.Count, w.Length)) return false;
             double smv = 0, smv2 = 0;
             for (int i = end - n; i < end; i++)
             {
                 forward += w.Forward[i];
+                lateral += w.Lateral[i];
                 vertical += w.Vertical[i];
                 smv += w.Smv[i];
                 smv2 += w.Smv[i] * w.Smv[i];
             }
             smv /= n;
             forward /= n;
+            lateral /= n;
             vertical /= n;
             return smv2 / n - smv * smv <= maxSpread * maxSpread && forward * forward + vertical * vertical > 1e-12;
         }

@@ -54,7 +54,6 @@ namespace HeadGait
         double lastSurePass = double.NaN;  // when the gate was last sure of walking (GateVerdict.SurelyWalking)
         double shownWalkSince = double.NaN; // when the walk going on was first shown; NaN while none is (PhaseFilterSettings.ShortWalkGivesNoCredit)
         double previousWalkEnd = double.NaN, previousWalkShownFor; // the last shown walk that ended: when, and for how long it was shown (PhaseFilterSettings.ResumeStart)
-        double gateLogOdds = double.NaN; // the gate's log-odds at the last JudgeGate (NaN without a gate)
         ThresholdClassifier stepClock;     // THR on the model's gate (PhaseFilterSettings.WalkOnStepClock); made on first use
         double stepClockTime = double.NaN; // end of the last window it read
         double stepClockWalkingSince = double.NaN; // when its walk going on began; NaN while it stands
@@ -429,7 +428,7 @@ namespace HeadGait
         /// <summary>Reads the window (<see cref="WindowReading"/>); call it for every window, in order, as <see cref="Classify"/> does.</summary>
         public WindowReading Read(SignalWindow window)
         {
-            var gate = JudgeGate(window); // reads the rhythm's step period too
+            var gate = JudgeGate(window, out double gateLogOdds); // reads the rhythm's step period too
             var tiltReading = ReadTilt(window);
             bool walks = FollowStepClock(window);
             return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, walks, !double.IsNaN(stepClockWalkingSince), gateLogOdds);
@@ -502,14 +501,15 @@ namespace HeadGait
         }
 
         /// <summary>What <see cref="Gate"/> says of the window (<see cref="GateVerdict.Passes"/> without a gate).</summary>
-        public GateVerdict JudgeGate(SignalWindow window)
+        public GateVerdict JudgeGate(SignalWindow window) => JudgeGate(window, out _);
+
+        /// <summary>The same, and the gate's log-odds (NaN without a gate).</summary>
+        GateVerdict JudgeGate(SignalWindow window, out double logOdds)
         {
-            gateLogOdds = double.NaN;
+            logOdds = double.NaN;
             if (Gate == null) return GateVerdict.Passes;
             FollowRhythm(window);
-            bool passes = Gate.Passes(window, out double logOdds);
-            gateLogOdds = logOdds;
-            if (!passes)
+            if (!Gate.Passes(window, out logOdds))
             {
                 if (rhythmHolds) return GateVerdict.RefusesInStepRhythm;
                 double narrow = filter?.Settings.NarrowRefusalLogOdds ?? 0;
