@@ -87,10 +87,13 @@ namespace HeadGait.Tests
             }
         }
 
-        static void AssertBatchedEqualsOneAtATime(string kind, List<ImuSample> samples, bool expectRestart)
+        static void AssertBatchedEqualsOneAtATime(string kind, List<ImuSample> samples, bool expectRestart, bool expectLiveScale = false)
         {
             var models = Models;
-            var expected = OneAtATime(Create(models, kind), samples);
+            var single = Create(models, kind);
+            var singleCounter = new CountingEvaluator(single.Network);
+            single.Evaluator = singleCounter;
+            var expected = OneAtATime(single, samples);
 
             var batchedClassifier = Create(models, kind);
             var counter = new CountingEvaluator(batchedClassifier.Network);
@@ -100,7 +103,15 @@ namespace HeadGait.Tests
             Assert.That(expected.Count, Is.GreaterThan(500), "windows classified");
             Assert.That(expected.Exists(f => f.Contains(" True ")), Is.True, "some windows are predicted walking");
             Assert.That(actual, Is.EqualTo(expected), "batched predictions and frames equal one-at-a-time ones, bit for bit");
-            Assert.That(counter.Windows, Is.EqualTo(expected.Count), "every window scored exactly once");
+            // A window read at a live time scale is scored twice (as it is, and at the scale), every other window once.
+            Assert.That(counter.Windows, Is.EqualTo(singleCounter.Windows), "every window scored as often as one at a time");
+            Assert.That(counter.Windows, Is.GreaterThanOrEqualTo(expected.Count));
+            if (expectLiveScale)
+            {
+                Assert.That(batchedClassifier.LiveTimeScale, Is.LessThan(1), "the stream moved the live scale");
+                Assert.That(counter.Windows, Is.GreaterThan(expected.Count + 100), "windows read at the scale were scored twice");
+            }
+            else if (kind == BlstmClassifier.Kind) Assert.That(counter.Windows, Is.EqualTo(expected.Count), "every window scored exactly once");
             Assert.That(counter.Calls, Is.LessThan(counter.Windows / 5), "windows are scored in batches, not one per call");
             Assert.That(counter.Largest, Is.GreaterThan(20));
             if (expectRestart) Assert.That(pipeline.Preprocessor.Gaps, Is.GreaterThan(0), "the stream restarted inside a batch");
@@ -110,6 +121,19 @@ namespace HeadGait.Tests
         [TestCase("blstm")]
         public void BatchedEvaluationEqualsPerWindowOnAGeneratedWalkWithADropout(string kind)
             => AssertBatchedEqualsOneAtATime(kind, GeneratedWalkWithGap(), expectRestart: true);
+
+        [Test]
+        public void BatchedEvaluationEqualsPerWindowForAQuickWalkerReadAtALiveScale()
+        {
+            // A walker quicker than the training walkers (2.4 steps a second): the SVM reads part of the stream at a live
+            // time scale, so a batch holds windows scored once and windows scored twice.
+            var wearer = GaitSubject.Random(31, "quick");
+            wearer.StepFrequency = 2.4;
+            var rec = WalkingStreamGenerator.Generate("quick", wearer, new StreamScript().Stand(2).Walk(25, Foot.Right).Stand(1).Walk(25, Foot.Left, -30).Stand(2), 911);
+            var samples = new List<ImuSample>();
+            foreach (var s in rec.Samples) samples.Add(s.Imu);
+            AssertBatchedEqualsOneAtATime("svm", samples, expectRestart: false, expectLiveScale: true);
+        }
 
         [TestCase("svm", "walk_turns")]
         [TestCase("svm", "irregular_rate")]

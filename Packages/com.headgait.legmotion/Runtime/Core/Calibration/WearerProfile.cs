@@ -134,7 +134,8 @@ namespace HeadGait.Calibration
         /// <summary>
         /// A copy of a learned model whose input scaling reads the acceleration times <see cref="LearnedGain"/>, whose window
         /// reads <see cref="LearnedTimeScale"/> times its span (<see cref="LearnedClassifier.WearerTimeScaleKey"/>; written only
-        /// when not 1) and whose gate is opened by <see cref="LearnedGateShift"/>.
+        /// when not 1: at 1 the model follows a live scale where its settings read one, <see cref="PhaseFilterSettings.LiveTimeScale"/>)
+        /// and whose gate is opened by <see cref="LearnedGateShift"/>.
         /// </summary>
         public ModelFile ScaledModel(ModelFile model)
         {

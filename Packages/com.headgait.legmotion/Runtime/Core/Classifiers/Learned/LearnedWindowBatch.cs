@@ -11,14 +11,14 @@ namespace HeadGait
     public sealed class LearnedWindowBatch
     {
         readonly LearnedClassifier classifier;
-        readonly int width, outputCount;
-        double[] features = Array.Empty<double>(); // [window][reading][time][channel] (LearnedClassifier.RowsPerWindow readings)
-        double[] outputs = Array.Empty<double>();  // [window][reading][output] (LearnedClassifier.WindowOutputCount)
+        readonly int width, outputCount; // per reading
+        double[] features = Array.Empty<double>(); // [row][time][channel]: each window's LearnedClassifier.RowsToScore readings
+        double[] outputs = Array.Empty<double>();  // [row][output]
         Entry[] entries = new Entry[16];
-        int entryCount, windowCount;
+        int entryCount, windowCount, rowCount;
         bool evaluated;
 
-        /// <summary>A window (its row) or, with Row = -1, a restart of the stream at Time.</summary>
+        /// <summary>A window (its first row) or, with Row = -1, a restart of the stream at Time.</summary>
         struct Entry
         {
             public int Row;
@@ -29,8 +29,8 @@ namespace HeadGait
         public LearnedWindowBatch(LearnedClassifier classifier)
         {
             this.classifier = classifier ?? throw new ArgumentNullException(nameof(classifier));
-            width = classifier.WindowInputWidth;
-            outputCount = classifier.WindowOutputCount;
+            width = classifier.Features.Width;
+            outputCount = classifier.OutputCount;
         }
 
         /// <summary>Windows and restarts queued, in order.</summary>
@@ -43,14 +43,18 @@ namespace HeadGait
         public void AddWindow(SignalWindow window)
         {
             if (evaluated) throw new InvalidOperationException("Clear the batch before adding to it again.");
-            if ((windowCount + 1) * width > features.Length)
+            var rows = classifier.StandardiseRows(window);
+            int n = classifier.RowsToScore;
+            if ((rowCount + n) * width > features.Length)
             {
-                int capacity = Math.Max(16, 2 * windowCount);
+                int capacity = Math.Max(16, 2 * (rowCount + n));
                 Array.Resize(ref features, capacity * width);
                 Array.Resize(ref outputs, capacity * outputCount);
             }
-            Array.Copy(classifier.StandardiseRows(window), 0, features, windowCount * width, width);
-            Add(new Entry { Row = windowCount++, Time = window.EndTime, Reading = classifier.Read(window) });
+            Array.Copy(rows, 0, features, rowCount * width, n * width);
+            Add(new Entry { Row = rowCount, Time = window.EndTime, Reading = classifier.Read(window) });
+            rowCount += n;
+            windowCount++;
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -69,7 +73,7 @@ namespace HeadGait
         /// <summary>Scores every queued window in one call of the classifier's evaluator (none when no window is queued).</summary>
         public void Evaluate()
         {
-            if (windowCount > 0) classifier.Evaluator.Evaluate(features, windowCount * classifier.RowsPerWindow, outputs);
+            if (rowCount > 0) classifier.Evaluator.Evaluate(features, rowCount, outputs);
             evaluated = true;
         }
 
@@ -87,13 +91,14 @@ namespace HeadGait
             if (!evaluated) throw new InvalidOperationException("Evaluate the batch before classifying its windows.");
             var e = entries[index];
             if (e.Row < 0) throw new ArgumentException($"Entry {index} is a restart, not a window.", nameof(index));
-            return classifier.ClassifyScored(outputs, e.Row, e.Reading);
+            return classifier.ClassifyScoredAt(outputs, e.Row * outputCount, e.Reading);
         }
 
         public void Clear()
         {
             entryCount = 0;
             windowCount = 0;
+            rowCount = 0;
             evaluated = false;
         }
     }

@@ -153,6 +153,17 @@ namespace HeadGait
         /// </summary>
         public bool StillStartBendInRoll = false;
 
+        /// <summary>
+        /// Whether a wearer quicker than the training walkers is read at their own step while no calibration sets a scale
+        /// (<see cref="LearnedClassifier.LiveTimeScale"/>): the model also reads the newest stretch of the window resampled
+        /// by the wearer's step period over the training walkers' (the head's rhythm's, <see cref="StepRhythm.ShowsStepPeriod"/>
+        /// as <see cref="HoldOnRhythm"/> reads it, else THR's settled step clock's, <see cref="WalkOnStepClock"/>; never below
+        /// <see cref="HeadGait.Calibration.WearerProfile.MinLearnedTimeScale"/>, never above 1: training already stretched
+        /// its walks for slower wearers), and that reading picks the walking class while the window as it is decides whether
+        /// the wearer walks, as a calibration's scale does. Off unless set; the SVM sets it (<see cref="SvmClassifier.DefaultFilter"/>).
+        /// </summary>
+        public bool LiveTimeScale = false;
+
         /// <summary>Weight of the model's standing probability in a window the gate is sure of (see <see cref="SureWalkingLogOdds"/>).</summary>
         public double SureWalkingStandingWeight = 0.01;
 
