@@ -152,7 +152,7 @@ namespace HeadGait.Tests
             var (walk, other, wearer) = QuickAndSlow(2.4, 31);
             var profile = Fitted(walk, models, new AdaptationSettings());
             Assert.That(AdaptationSettings.For(WearerProfile.SelfSupervised).LearnedTimeScale, Is.False, "self-supervised profiles read the window as it is");
-            double trainedStep = models.SvmOf(models.Svm).PhaseMap.ReferenceStridePeriod / 2;
+            double trainedStep = models.SvmOf(models.Svm).TrainedStepPeriod;
             Assert.That(profile.LearnedTimeScale, Is.LessThan(1).And.EqualTo(WearerAdaptation.StepPeriod(new[] { walk }) / trainedStep).Within(0.01));
             var unscaled = WearerProfile.Parse(profile.Serialize());
             unscaled.LearnedTimeScale = 1;
@@ -190,7 +190,7 @@ namespace HeadGait.Tests
             var live = ShippedSvm(true);
             double scaled = ReplayEvaluator.Run(other, live).ClassifierMetrics.MisclassificationRate;
             double plain = ReplayEvaluator.Run(other, ShippedSvm(false)).ClassifierMetrics.MisclassificationRate;
-            double trainedStep = live.PhaseMap.ReferenceStridePeriod / 2;
+            double trainedStep = live.TrainedStepPeriod;
             TestContext.WriteLine($"live scale {live.LiveTimeScale:F2} (step over the training walkers' {WearerAdaptation.StepPeriod(new[] { other }) / trainedStep:F2}): other walk {scaled:P1} live, {plain:P1} as it is");
             Assert.That(live.LiveTimeScale, Is.EqualTo(WearerAdaptation.StepPeriod(new[] { other }) / trainedStep).Within(0.06));
             Assert.That(scaled, Is.LessThan(plain - 0.01), $"live {scaled:P1}, as it is {plain:P1}");

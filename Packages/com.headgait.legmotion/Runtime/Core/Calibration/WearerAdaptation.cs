@@ -317,7 +317,7 @@ namespace HeadGait.Calibration
             var learned = models.Svm ?? models.Blstm;
             if (learned == null) return 1;
             double wearerStep = StepPeriod(walk);
-            double trainedStep = (models.Svm != null ? models.SvmOf(learned) : models.BlstmOf(learned)).PhaseMap.ReferenceStridePeriod / 2;
+            double trainedStep = (models.Svm != null ? models.SvmOf(learned) : models.BlstmOf(learned)).TrainedStepPeriod;
             if (!(wearerStep > 0)) return 1;
             double scale = Math.Round(Math.Max(WearerProfile.MinLearnedTimeScale, Math.Min(WearerProfile.MaxLearnedTimeScale, 1 + a.LearnedTimeScaleShare * (wearerStep / trainedStep - 1))), 3);
             if (Math.Abs(scale - 1) < MinTimeScaleChange || scale > 1 && !a.LearnedTimeScaleUpward) return 1;

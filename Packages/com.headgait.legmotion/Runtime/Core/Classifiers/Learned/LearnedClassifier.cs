@@ -174,7 +174,7 @@ namespace HeadGait
         /// <summary>Seconds of signal the model reads per second of its window (1: the window as it is; &gt; 1: a longer stretch, resampled).</summary>
         public double TimeScale { get; }
 
-        SignalWindow timeScaled; // the window resampled at ReadScale (made on first use)
+        SignalWindow timeScaled; // the window resampled at ReadScale (made on first use; with the classifier for a live scale)
         readonly bool liveScaling; // PhaseFilterSettings.LiveTimeScale, with no wearer's scale set
         double liveScale = 1;      // the live scale the head's rhythm last showed (LiveTimeScale)
         double rowScale = 1;       // the scale StandardiseRows read the last window's second row at
@@ -186,15 +186,16 @@ namespace HeadGait
         public double ReadScale => TimeScale != 1 ? TimeScale : liveScale;
 
         /// <summary>
-        /// The time scale the head's rhythm last showed (<see cref="PhaseFilterSettings.LiveTimeScale"/>): its step period over
-        /// the training walkers' (half the model's <see cref="PhaseMap.ReferenceStridePeriod"/>), within
-        /// <see cref="HeadGait.Calibration.WearerProfile.MinLearnedTimeScale"/>..1, and 1 within <see cref="MinLiveScaleChange"/> of it;
-        /// kept while the rhythm shows no step (and by <see cref="Reset"/>, as the rhythm and tilt are), 1 until it first shows one.
+        /// The time scale the wearer's step last showed (<see cref="PhaseFilterSettings.LiveTimeScale"/>): the step period of the
+        /// head's rhythm, else of THR's settled step clock, over <see cref="TrainedStepPeriod"/>, within
+        /// <see cref="HeadGait.Calibration.WearerProfile.MinLearnedTimeScale"/>..1 and 1 within
+        /// <see cref="HeadGait.Calibration.WearerAdaptation.MinTimeScaleChange"/> of it, as a calibration's; kept while neither
+        /// shows a step (and by <see cref="Reset"/>, as the rhythm and tilt are), 1 until one first does.
         /// </summary>
         public double LiveTimeScale => liveScale;
 
-        /// <summary>Least change from 1 a live scale makes (as a calibration's, <see cref="HeadGait.Calibration.WearerAdaptation.MinTimeScaleChange"/>).</summary>
-        public const double MinLiveScaleChange = 0.02;
+        /// <summary>The training walkers' step period (s): half the model's <see cref="PhaseMap.ReferenceStridePeriod"/>.</summary>
+        public double TrainedStepPeriod => PhaseMap.ReferenceStridePeriod / 2;
 
         /// <summary>The model's <see cref="WearerTimeScaleKey"/> (1 without one).</summary>
         static double ReadTimeScale(ModelFile model, string key)
@@ -493,11 +494,11 @@ namespace HeadGait
             return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, walks, !double.IsNaN(stepClockWalkingSince), gateLogOdds, rowScale);
         }
 
-        /// <summary>The live scale of a step period the head's rhythm shows (<see cref="LiveTimeScale"/>).</summary>
+        /// <summary>The live scale of the wearer's step period (<see cref="LiveTimeScale"/>).</summary>
         double LiveScaleOf(double stepPeriod)
         {
-            double scale = Math.Round(Math.Max(HeadGait.Calibration.WearerProfile.MinLearnedTimeScale, Math.Min(1, stepPeriod / (PhaseMap.ReferenceStridePeriod / 2))), 2);
-            return 1 - scale < MinLiveScaleChange ? 1 : scale;
+            double scale = Math.Round(Math.Max(HeadGait.Calibration.WearerProfile.MinLearnedTimeScale, Math.Min(1, stepPeriod / TrainedStepPeriod)), 2);
+            return 1 - scale < HeadGait.Calibration.WearerAdaptation.MinTimeScaleChange ? 1 : scale;
         }
 
         /// <summary>
