@@ -612,7 +612,8 @@ namespace HeadGait
         /// their order; the time filter and step period carry over from one to the next. <paramref name="tilt"/>: what
         /// <see cref="ReadTilt"/> read of the window; <paramref name="rhythmStepPeriod"/>: <see cref="RhythmPeriod"/> after
         /// <see cref="JudgeGate"/> judged it (0: none); <paramref name="stepClockWalks"/>: what <see cref="FollowStepClock"/> returned for it; <paramref name="stepClockShowsWalk"/>: whether
-        /// THR's step clock showed a walk at it, settled or not (<see cref="WindowReading.StepClockShowsWalk"/>).
+        /// THR's step clock showed a walk at it, settled or not (<see cref="WindowReading.StepClockShowsWalk"/>);
+        /// <paramref name="modelScale"/>: the scale of its second row (<see cref="WindowReading.ModelScale"/>; NaN: <see cref="TimeScale"/>).
         /// </summary>
         public GaitPrediction ClassifyScored(double[] batchOutputs, int row, double endTime, double sampleRate, GateVerdict gate = GateVerdict.Passes, HeadTiltReading tilt = default, double rhythmStepPeriod = 0, bool stepClockWalks = false, bool stepClockShowsWalk = false, double gateLogOdds = double.NaN, double modelScale = double.NaN)
         {
@@ -623,7 +624,7 @@ namespace HeadGait
 
         /// <summary>
         /// The same for outputs packed as <see cref="RowsToScore"/> rows per window (<see cref="LearnedWindowBatch"/>): the
-        /// window's begin at element <paramref name="offset"/>.
+        /// window's outputs begin at element <paramref name="offset"/>.
         /// </summary>
         internal GaitPrediction ClassifyScoredAt(double[] batchOutputs, int offset, in WindowReading reading)
         {
