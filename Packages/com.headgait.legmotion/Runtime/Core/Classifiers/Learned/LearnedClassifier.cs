@@ -371,14 +371,11 @@ namespace HeadGait
         /// </summary>
         public int RowsPerWindow => TimeScale != 1 || liveScaling ? 2 : 1;
 
-        /// <summary>Features an evaluator gets per window (<see cref="RowsPerWindow"/> rows of <see cref="WindowFeatures.Width"/>).</summary>
-        public int WindowInputWidth => RowsPerWindow * Features.Width;
-
         /// <summary>Outputs an evaluator gives per window (<see cref="RowsPerWindow"/> rows of <see cref="OutputCount"/>).</summary>
         public int WindowOutputCount => RowsPerWindow * OutputCount;
 
         /// <summary>
-        /// Every reading of a window the model scores, standardised, row by row (<see cref="WindowInputWidth"/>):
+        /// Every reading of a window the model scores, standardised, row by row (<see cref="RowsPerWindow"/> rows of <see cref="WindowFeatures.Width"/>):
         /// <see cref="Standardise"/>'s alone at a time scale of 1; else the window as it is, then at <see cref="ReadScale"/>
         /// (a copy of the first while a live scale is 1: only <see cref="RowsToScore"/> rows need scoring).
         /// </summary>
@@ -634,7 +631,7 @@ namespace HeadGait
 
         /// <summary>The window <see cref="Read"/> read, its outputs row <paramref name="row"/> of <paramref name="batchOutputs"/> (see the overload above).</summary>
         public GaitPrediction ClassifyScored(double[] batchOutputs, int row, in WindowReading reading)
-            => ClassifyScored(batchOutputs, row, reading.Time, reading.SampleRate, reading.Gate, reading.Tilt, reading.RhythmPeriod, reading.StepClockWalks, reading.StepClockShowsWalk, reading.GateLogOdds, reading.ModelScale);
+            => ClassifyScoredAt(batchOutputs, row * WindowOutputCount, reading);
 
         /// <summary>
         /// The wearer's probabilities, which pick the walking class (<see cref="Decide"/>): with their output shifts

@@ -15,7 +15,7 @@ namespace HeadGait
         double[] features = Array.Empty<double>(); // [row][time][channel]: each window's LearnedClassifier.RowsToScore readings
         double[] outputs = Array.Empty<double>();  // [row][output]
         Entry[] entries = new Entry[16];
-        int entryCount, windowCount, rowCount;
+        int entryCount, rowCount;
         bool evaluated;
 
         /// <summary>A window (its first row) or, with Row = -1, a restart of the stream at Time.</summary>
@@ -36,9 +36,6 @@ namespace HeadGait
         /// <summary>Windows and restarts queued, in order.</summary>
         public int Count => entryCount;
 
-        /// <summary>Windows queued.</summary>
-        public int Windows => windowCount;
-
         /// <summary>Queues a window: its standardised features are copied now (the preprocessor reuses the window).</summary>
         public void AddWindow(SignalWindow window)
         {
@@ -54,7 +51,6 @@ namespace HeadGait
             Array.Copy(rows, 0, features, rowCount * width, n * width);
             Add(new Entry { Row = rowCount, Time = window.EndTime, Reading = classifier.Read(window) });
             rowCount += n;
-            windowCount++;
         }
 
         /// <summary>Queues a restart of the stream (a gap or a clock jump) at <paramref name="time"/>, between the windows around it.</summary>
@@ -97,7 +93,6 @@ namespace HeadGait
         public void Clear()
         {
             entryCount = 0;
-            windowCount = 0;
             rowCount = 0;
             evaluated = false;
         }
