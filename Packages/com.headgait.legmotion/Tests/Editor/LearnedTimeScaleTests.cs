@@ -201,6 +201,29 @@ namespace HeadGait.Tests
         }
 
         [Test]
+        public void AQuickWearerIsReadAtTheirStepFromTheFirstStepTheClockTimes()
+        {
+            // A stream that starts in the quick wearer's walk, as the motion-capture clips do. THR's step clock beside the
+            // SVM times their step between its first two contacts; the live scale follows it from there, not only once the
+            // clock's walk has settled (a second later: the quick *active* walkers' 3-4 s clips were read as they are for
+            // most of their length).
+            var wearer = GaitSubject.Random(31, "wearer31");
+            wearer.StepFrequency = 2.4;
+            var walk = WalkingStreamGenerator.Generate("walk", wearer, new StreamScript().Walk(12, Foot.Left).Stand(2), 912);
+            var live = ShippedSvm(true);
+            var pipeline = new GaitPipeline(live);
+            double firstScaled = double.NaN;
+            foreach (var s in walk.Samples)
+            {
+                pipeline.Push(s.Imu);
+                if (double.IsNaN(firstScaled) && live.LiveTimeScale < 1) firstScaled = s.Imu.Time - walk.Samples[0].Imu.Time;
+            }
+            TestContext.WriteLine($"read at a scale from {firstScaled:F2} s ({live.LiveTimeScale:F2} at the end)");
+            Assert.That(live.LiveTimeScale, Is.LessThan(0.85));
+            Assert.That(firstScaled, Is.LessThan(1.5), "the settled clock alone: 1.76 s");
+        }
+
+        [Test]
         public void ASlowWearerWithoutAProfileIsReadAsEver()
         {
             // Slower than the training walkers (0.71 s a step): no live scale, and every prediction as with it off.

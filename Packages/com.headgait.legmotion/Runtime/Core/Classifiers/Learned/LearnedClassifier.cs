@@ -58,6 +58,7 @@ namespace HeadGait
         double stepClockTime = double.NaN; // end of the last window it read
         double stepClockWalkingSince = double.NaN; // when its walk going on began; NaN while it stands
         double stepClockPeriod; // its step period while it walks; 0 while it stands
+        bool stepClockPeriodTimed; // whether that period was timed between two contacts of its walk, not its first guess
         double ownWalkingShare; // the model's own walking share, averaged over PhaseFilterSettings.OwnWalkingSpan
 
         protected LearnedClassifier(ModelFile model, string kind, PhaseFilterSettings filterSettings)
@@ -483,13 +484,22 @@ namespace HeadGait
             bool walks = FollowStepClock(window);
             if (liveScaling)
             {
-                // The rhythm needs 2.5 s of walking; a settled step clock shows the step sooner (style CV: the quick
-                // *active* walkers' clips were read at their step in 35 % of their windows on the rhythm alone, 65 % with it).
-                double period = rhythmPeriod > 0 ? rhythmPeriod : walks ? stepClockPeriod : 0;
+                // The rhythm needs 2.5 s of walking; THR's step clock shows the step sooner: settled, or once it has timed a
+                // step between two contacts (style CV: the quick *active* walkers' clips were read at their step in 35 % of
+                // their windows on the rhythm alone, 65 % with the settled clock; the first timed step, 18.8 to 18.4 %).
+                double period = rhythmPeriod > 0 ? rhythmPeriod : walks || ClockTimedAWalkersStep ? stepClockPeriod : 0;
                 if (period > 0) liveScale = LiveScaleOf(period);
             }
             return new WindowReading(window.EndTime, window.SampleRate, gate, tiltReading, rhythmPeriod, walks, !double.IsNaN(stepClockWalkingSince), gateLogOdds, rowScale);
         }
+
+        /// <summary>
+        /// Whether THR's step clock, walking but not yet settled, has timed a step between two contacts of this walk that a
+        /// live scale reaches (at least <see cref="HeadGait.Calibration.WearerProfile.MinLearnedTimeScale"/> of the trained
+        /// step): a quicker first interval is two bumps of one slow step (the style folds' clips made slow: 0.31-0.36 s
+        /// intervals of 0.78-s steps, each read at 0.7 for a second and more), not a quick walker's step.
+        /// </summary>
+        bool ClockTimedAWalkersStep => stepClockPeriodTimed && stepClockPeriod >= HeadGait.Calibration.WearerProfile.MinLearnedTimeScale * TrainedStepPeriod;
 
         /// <summary>The live scale of the wearer's step period (<see cref="LiveTimeScale"/>).</summary>
         double LiveScaleOf(double stepPeriod)
@@ -557,6 +567,7 @@ namespace HeadGait
             stepClockTime = now;
             var clockPrediction = stepClock.Classify(window);
             stepClockPeriod = clockPrediction.IsWalking ? clockPrediction.StepPeriod : 0;
+            stepClockPeriodTimed = clockPrediction.IsWalking && stepClock.Clock.PeriodMeasured;
             if (!clockPrediction.IsWalking)
             {
                 stepClockWalkingSince = double.NaN;
