@@ -188,7 +188,8 @@ namespace HeadGait
 
         /// <summary>
         /// The time scale the wearer's step last showed (<see cref="PhaseFilterSettings.LiveTimeScale"/>): the step period of the
-        /// head's rhythm, else of THR's settled step clock, over <see cref="TrainedStepPeriod"/>, within
+        /// head's rhythm, else of THR's step clock once it has settled or has timed a step a scale reaches (its first timed
+        /// step: <see cref="ClockTimedAWalkersStep"/>), over <see cref="TrainedStepPeriod"/>, within
         /// <see cref="HeadGait.Calibration.WearerProfile.MinLearnedTimeScale"/>..1 and 1 within
         /// <see cref="HeadGait.Calibration.WearerAdaptation.MinTimeScaleChange"/> of it, as a calibration's; kept while neither
         /// shows a step (and by <see cref="Reset"/>, as the rhythm and tilt are), 1 until one first does.

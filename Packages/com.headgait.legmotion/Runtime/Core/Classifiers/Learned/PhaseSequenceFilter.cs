@@ -157,7 +157,8 @@ namespace HeadGait
         /// Whether a wearer quicker than the training walkers is read at their own step while no calibration sets a scale
         /// (<see cref="LearnedClassifier.LiveTimeScale"/>): the model also reads the newest stretch of the window resampled
         /// by the wearer's step period over the training walkers' (the head's rhythm's, <see cref="StepRhythm.ShowsStepPeriod"/>
-        /// as <see cref="HoldOnRhythm"/> reads it, else THR's settled step clock's, <see cref="WalkOnStepClock"/>; never below
+        /// as <see cref="HoldOnRhythm"/> reads it, else THR's step clock's, <see cref="WalkOnStepClock"/>, settled or from the
+        /// first step it timed, <see cref="LearnedClassifier.LiveTimeScale"/>; never below
         /// <see cref="HeadGait.Calibration.WearerProfile.MinLearnedTimeScale"/>, never above 1: training already stretched
         /// its walks for slower wearers), and that reading picks the walking class while the window as it is decides whether
         /// the wearer walks, as a calibration's scale does. Off unless set; the SVM sets it (<see cref="SvmClassifier.DefaultFilter"/>).

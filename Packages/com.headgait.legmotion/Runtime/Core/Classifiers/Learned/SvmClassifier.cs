@@ -76,7 +76,8 @@ namespace HeadGait
         /// (<see cref="PhaseFilterSettings.LiveTimeScale"/>): style CV 21.0 / 19.3 to 18.8 / 17.6 % (the quick *active* walkers
         /// 27.5 to 19.9 %, bn1 *childish* 33.1 to 26.3 %, no style worse by more than 0.4 point), the clips made slow 26.8 to
         /// 26.9 %, gestures and bows as before; glasses (avatar) walking 95.5 % either way, alternation 97.55 to 97.51 %,
-        /// picking up 1.21 to 1.22 %, putting on 0.965 to 0.971 %. Cost: windows read at a scale are scored twice.
+        /// picking up 1.21 to 1.22 %, putting on 0.965 to 0.971 %. Cost: windows read at a scale are scored twice. With the
+        /// step clock's first timed step as well as its settled one: style CV 18.8 / 17.6 to 18.4 / 16.9 %, slow 26.9 to 27.1 %.
         /// </summary>
         public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings { EvidenceWeight = 0.5, YoungWalkStandingWeight = 0.1, WalkOnStepClock = true, NarrowRefusalLogOdds = 2,
             ShortWalkGivesNoCredit = true, ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5), StillStartBendInRoll = true, LiveTimeScale = true };
