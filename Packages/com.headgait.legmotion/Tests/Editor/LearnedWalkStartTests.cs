@@ -326,7 +326,7 @@ namespace HeadGait.Tests
             foreach (var s in r.Samples)
                 pre.Push(s.Imu, w =>
                 {
-                    c.Evaluator.Evaluate(c.StandardiseRows(w), c.RowsPerWindow, row);
+                    c.Evaluator.Evaluate(c.StandardiseRows(w), c.RowsToScore, row);
                     outputs.AddRange(row);
                     result.Windows.Add(c.Read(w));
                 });

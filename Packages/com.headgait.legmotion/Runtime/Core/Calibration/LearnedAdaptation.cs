@@ -407,7 +407,7 @@ namespace HeadGait.Calibration
                     {
                         var outcome = pre.Push(s.Imu, w =>
                         {
-                            classifier.Network.Evaluate(classifier.StandardiseRows(w), classifier.RowsPerWindow, row);
+                            classifier.Network.Evaluate(classifier.StandardiseRows(w), classifier.RowsToScore, row);
                             var e = new Entry { Row = result.rows, Reading = classifier.Read(w) };
                             if (labels.TryLabelsAt(w.EndTime, out var truth))
                             {

@@ -377,20 +377,14 @@ namespace HeadGait
         public int WindowOutputCount => RowsPerWindow * OutputCount;
 
         /// <summary>
-        /// Every reading of a window the model scores, standardised, row by row (<see cref="RowsPerWindow"/> rows of <see cref="WindowFeatures.Width"/>):
-        /// <see cref="Standardise"/>'s alone at a time scale of 1; else the window as it is, then at <see cref="ReadScale"/>
-        /// (a copy of the first while a live scale is 1: only <see cref="RowsToScore"/> rows need scoring).
+        /// Every reading of a window the model scores, standardised, row by row (<see cref="RowsToScore"/> rows of
+        /// <see cref="WindowFeatures.Width"/>): <see cref="Standardise"/>'s alone at a <see cref="ReadScale"/> of 1 (no wearer's
+        /// scale, or a live one that is 1); else the window as it is, then at <see cref="ReadScale"/>.
         /// </summary>
         public double[] StandardiseRows(SignalWindow window)
         {
             rowScale = ReadScale;
-            if (RowsPerWindow == 1) return Standardise(window);
-            if (rowScale == 1)
-            {
-                Array.Copy(Standardise(window), 0, rowFeatures, 0, Features.Width);
-                Array.Copy(rowFeatures, 0, rowFeatures, Features.Width, Features.Width);
-                return rowFeatures;
-            }
+            if (rowScale == 1) return Standardise(window);
             Features.Extract(window, rowFeatures);
             StandardiseRow(rowFeatures, 0);
             Array.Copy(Standardise(window), 0, rowFeatures, Features.Width, Features.Width);
@@ -398,8 +392,9 @@ namespace HeadGait
         }
 
         /// <summary>
-        /// Rows of the last <see cref="StandardiseRows"/> that need scoring: 1 when the second reading is the window as it is
-        /// (a live scale of 1, most windows of a wearer no quicker than the training walkers), else <see cref="RowsPerWindow"/>.
+        /// Rows the last <see cref="StandardiseRows"/> gave: 1 at a <see cref="ReadScale"/> of 1 (with a live scale, most windows
+        /// of a wearer no quicker than the training walkers), else <see cref="RowsPerWindow"/>. An evaluator writing
+        /// <see cref="WindowOutputCount"/> per window leaves the second reading's outputs unread then (<see cref="WindowReading.ModelScale"/> 1).
         /// </summary>
         public int RowsToScore => rowScale == 1 ? 1 : RowsPerWindow;
 
