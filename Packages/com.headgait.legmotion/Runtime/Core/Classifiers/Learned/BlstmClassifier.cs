@@ -52,9 +52,12 @@ namespace HeadGait
         /// sample as before (no style folds here for the BLSTM's style CV). Its still-start rule reads the bend in pitch and
         /// roll, as the SVM's (<see cref="PhaseFilterSettings.StillStartBendInRoll"/>): putting on 0.84 to 0.70 %, standing
         /// 0.75 to 0.61 %, sitting 0.42 to 0.39 %, picking up 1.16 to 1.04 %, walking 95.3 to 95.2 % (worst tenth 86.2 to 85.5).
+        /// While THR's settled walk goes on, the tilt's start limit gives way to its walking one, as the SVM's
+        /// (<see cref="PhaseFilterSettings.StartTiltOnSettledClock"/>): glasses walking 95.2 to 95.4 % (worst tenth 85.5 to
+        /// 86.6), picking up 1.044 to 1.075 %, putting on 0.70 to 0.72 %, standing and sitting as before (style CV not judged).
         /// </summary>
         public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings { WalkOnStepClock = true, FreshWalkShownAfter = 0.25,
-            ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5), StillStartBendInRoll = true };
+            ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5), StillStartBendInRoll = true, StartTiltOnSettledClock = true };
 
         /// <summary>With the given time filter, or none (null): the network's own per-window answers, as the paper's classifier.</summary>
         public BlstmClassifier(ModelFile model, PhaseFilterSettings filter) : base(model, Kind, filter)

@@ -676,7 +676,7 @@ namespace HeadGait
             ToProbabilities(scores, probabilities);
             bool wearer = WearerReading(modelScale);
             bool bendingFromStill = BendingFromStill(tilt, now); // read every window: it follows the standing before a start
-            bool bending = Bending(tilt.Change, now) || bendingFromStill;
+            bool bending = Bending(tilt.Change, now, stepClockWalks) || bendingFromStill;
             if (bending) gate = GateVerdict.Refuses;
             else if (ResumesThroughRefusal(gate, gateLogOdds, now)) gate = GateVerdict.Passes;
             if (gate == GateVerdict.SurelyWalking) lastSurePass = now;
@@ -871,13 +871,15 @@ namespace HeadGait
         /// <summary>
         /// Whether the head's tilt moved too much for walking: more than <see cref="PhaseFilterSettings.MaxStartTiltChange"/>
         /// to start one or go on with one younger than <see cref="HeadTilt.YoungWalk"/>, more than
-        /// <see cref="PhaseFilterSettings.MaxWalkingTiltChange"/> to go on with an older one.
+        /// <see cref="PhaseFilterSettings.MaxWalkingTiltChange"/> to go on with an older one, or with any while THR's step
+        /// clock walks (<paramref name="stepClockWalks"/>) and <see cref="PhaseFilterSettings.StartTiltOnSettledClock"/>.
         /// </summary>
-        bool Bending(double tiltChange, double now)
+        bool Bending(double tiltChange, double now, bool stepClockWalks)
         {
             if (filter == null) return false;
             bool young = IsYoung(now);
-            double limit = WasWalking && !young ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
+            bool underWay = WasWalking && !young || stepClockWalks && filter.Settings.StartTiltOnSettledClock;
+            double limit = underWay ? filter.Settings.MaxWalkingTiltChange : filter.Settings.MaxStartTiltChange;
             return limit > 0 && tiltChange > limit;
         }
 

@@ -139,6 +139,15 @@ namespace HeadGait
         public double MaxWalkingTiltChange = HeadTilt.DefaultMaxWalkingChange;
 
         /// <summary>
+        /// With <see cref="WalkOnStepClock"/>: while THR's step clock beside the model shows a settled walk
+        /// (<see cref="StepClockWalkAge"/>), the model's walk may start, and a young one go on, while the head's tilt moves up to
+        /// <see cref="MaxWalkingTiltChange"/>, not only <see cref="MaxStartTiltChange"/>: THR's walk itself started under the
+        /// start limit, and a walk's turn or sideways gallop swings the tilt's half-second means past it for as long as it
+        /// lasts (style CV, SVM: bn1 *childish*'s sideways walk right 91.5 % shown standing, a turn of bn *fem* 43.5 %).
+        /// </summary>
+        public bool StartTiltOnSettledClock = false;
+
+        /// <summary>
         /// A walk that starts from a still head does not start, and stops within <see cref="HeadTilt.StillStartProbation"/>
         /// seconds of its start, while the head's pitch lies more than this many degrees from the still head's (the step
         /// clock's rule, <see cref="StepClockSettings.StillStartMaxBend"/>). 0 turns it off.

@@ -78,9 +78,14 @@ namespace HeadGait
         /// 26.9 %, gestures and bows as before; glasses (avatar) walking 95.5 % either way, alternation 97.55 to 97.51 %,
         /// picking up 1.21 to 1.22 %, putting on 0.965 to 0.971 %. Cost: windows read at a scale are scored twice. With the
         /// step clock's first timed step as well as its settled one: style CV 18.8 / 17.6 to 18.4 / 16.9 %, slow 26.9 to 27.1 %.
+        /// While THR's settled walk goes on, the tilt's start limit gives way to its walking one
+        /// (<see cref="PhaseFilterSettings.StartTiltOnSettledClock"/>): style CV 18.4 / 16.9 to 18.2 / 16.8 % (bn1 *childish*
+        /// 25.2 to 20.1 %), slow and gestures and bows as before; glasses (avatar) walking 95.5 to 95.6 % (worst tenth 90.1 to
+        /// 91.1), picking up 1.22 to 1.24 %, putting on 0.971 to 0.983 %, standing and sitting as before.
         /// </summary>
         public static PhaseFilterSettings DefaultFilter() => new PhaseFilterSettings { EvidenceWeight = 0.5, YoungWalkStandingWeight = 0.1, WalkOnStepClock = true, NarrowRefusalLogOdds = 2,
-            ShortWalkGivesNoCredit = true, ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5), StillStartBendInRoll = true, LiveTimeScale = true };
+            ShortWalkGivesNoCredit = true, ResumeStart = FirstStepStartSettings.Shipped(resumeAfterShown: 2.5), StillStartBendInRoll = true, LiveTimeScale = true,
+            StartTiltOnSettledClock = true };
 
         /// <summary>With the given time filter, or none (null): the SVM's own per-window votes decide, as the paper's classifier.</summary>
         public SvmClassifier(ModelFile model, PhaseFilterSettings filter) : base(model, Kind, filter)
